@@ -1,0 +1,31 @@
+#pragma once
+// An animation clip: keyframed channels on joints' translation, rotation or scale.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace anim {
+
+enum class Interpolation { Step, Linear, CubicSpline };
+enum class ChannelPath { Translation, Rotation, Scale };
+
+struct Channel {
+    std::uint32_t joint = 0;
+    ChannelPath path = ChannelPath::Rotation;
+    Interpolation interpolation = Interpolation::Linear;
+    // Strictly increasing key times in seconds.
+    std::vector<float> times;
+    // One value per key (xyz used for translation and scale; rotation is a quaternion as x, y, z, w).
+    // CubicSpline keys hold three values each: in-tangent, value, out-tangent.
+    std::vector<glm::vec4> values;
+};
+
+struct Clip {
+    std::string name;
+    float duration = 0.0f;  // seconds; clips loop over [0, duration)
+    std::vector<Channel> channels;
+};
+
+}  // namespace anim

@@ -1,0 +1,89 @@
+#include "app/options.h"
+
+#include <charconv>
+
+#include "gpu/vulkan_error.h"
+
+namespace app {
+
+const char* renderUsage() {
+    return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
+
+usage: crowd-render [options]
+  --model soldier|horse   built-in character (default soldier)
+  --count N               characters, 1..16777216 (default 1024)
+  --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
+  --method two-pass|vs    skinning method (default two-pass)
+  --frames N              frames to render (default 30)
+  --size WxH              image size in pixels (default 1280x720)
+  --out FILE.png          image of the last frame (default crowd.png)
+  --json FILE             fps, median frame ms, median GPU ms per pass, device and driver
+  --device INDEX|NAME     Vulkan device by index or name substring (see --list-devices)
+  --seed N                seed of the crowd's layout, phases and speeds (default 1)
+  --validation            enable the Khronos validation layer (with synchronization checks)
+  --list-devices          print the Vulkan devices and exit
+  --help                  print this help and exit
+)";
+}
+
+std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t min, std::uint32_t max) {
+    std::uint64_t value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error == std::errc::invalid_argument || ptr != end)
+        throw gpu::Error(flag + ": '" + text + "' is not a whole number");
+    if (error == std::errc::result_out_of_range || value > max)
+        throw gpu::Error(flag + ": " + text + " is too large (at most " + std::to_string(max) + ")");
+    if (value < min) throw gpu::Error(flag + ": " + text + " is too small (at least " + std::to_string(min) + ")");
+    return static_cast<std::uint32_t>(value);
+}
+
+VkExtent2D parseSize(const std::string& flag, const std::string& text) {
+    const std::size_t x = text.find('x');
+    if (x == std::string::npos) throw gpu::Error(flag + ": '" + text + "' is not of the form WIDTHxHEIGHT");
+    const std::uint32_t width = parseCount(flag + " width", text.substr(0, x), 1, 16384);
+    const std::uint32_t height = parseCount(flag + " height", text.substr(x + 1), 1, 16384);
+    return {width, height};
+}
+
+RenderOptions parseRenderOptions(const std::vector<std::string>& args) {
+    RenderOptions options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string flag = args[i];
+        std::string value;
+        bool hasInlineValue = false;
+        if (const std::size_t eq = flag.find('='); flag.rfind("--", 0) == 0 && eq != std::string::npos) {
+            value = flag.substr(eq + 1);
+            flag = flag.substr(0, eq);
+            hasInlineValue = true;
+        }
+        auto next = [&]() -> std::string {
+            if (hasInlineValue) return value;
+            if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
+            return args[++i];
+        };
+        if (flag == "--help" || flag == "-h") options.help = true;
+        else if (flag == "--list-devices") options.listDevices = true;
+        else if (flag == "--validation") options.validation = true;
+        else if (flag == "--model") options.scene.model = next();
+        else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
+        else if (flag == "--clip") options.scene.clip = next();
+        else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);
+        else if (flag == "--frames") options.frames = parseCount(flag, next(), 1, 1000000);
+        else if (flag == "--size") options.size = parseSize(flag, next());
+        else if (flag == "--out") options.out = next();
+        else if (flag == "--json") options.json = next();
+        else if (flag == "--device") options.device = next();
+        else if (flag == "--method") {
+            const std::string name = next();
+            if (!skin::parseMethod(name, options.method))
+                throw gpu::Error("--method: unknown method '" + name + "' (two-pass or vs)");
+        } else {
+            throw gpu::Error("unknown option '" + args[i] + "' (see --help)");
+        }
+        if (options.out.empty()) throw gpu::Error("--out: empty file name");
+    }
+    return options;
+}
+
+}  // namespace app

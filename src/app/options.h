@@ -1,0 +1,47 @@
+#pragma once
+// Command-line flags shared by crowd-render, crowd-view and crowd-bench, so the same command line
+// describes the same crowd in each.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "skin/skinning_method.h"
+
+namespace app {
+
+// What a crowd is: model, size, clip, seed.
+struct SceneOptions {
+    std::string model = "soldier";  // "soldier", "horse"
+    std::uint32_t count = 1024;
+    std::string clip;               // name or index; "" = the model's default clip, "random" = one per character
+    std::uint32_t seed = 1;
+};
+
+struct RenderOptions {
+    SceneOptions scene;
+    skin::Method method = skin::Method::TwoPass;
+    std::uint32_t frames = 30;
+    VkExtent2D size{1280, 720};
+    std::string out = "crowd.png";
+    std::string device;
+    std::string json;
+    bool validation = false;
+    bool listDevices = false;
+    bool help = false;
+};
+
+// Turns argv into options. Throws gpu::Error with a one-line message naming the bad flag or value.
+RenderOptions parseRenderOptions(const std::vector<std::string>& args);
+
+// Strict parsers for flag values (whole string, no sign, within [min, max]); throw gpu::Error.
+std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t min, std::uint32_t max);
+VkExtent2D parseSize(const std::string& flag, const std::string& text);
+
+const char* renderUsage();
+
+// Largest --count accepted before any memory check: beyond it the CPU-side crowd alone is unreasonable.
+constexpr std::uint32_t kMaxCharacters = 16u * 1024u * 1024u;
+
+}  // namespace app

@@ -1,0 +1,88 @@
+#include "app/report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "gpu/buffer.h"
+#include "gpu/vulkan_error.h"
+
+namespace app {
+
+double median(std::vector<double> values) { return percentile(std::move(values), 0.5); }
+
+double percentile(std::vector<double> values, double fraction) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const double position = fraction * static_cast<double>(values.size() - 1);
+    const auto below = static_cast<std::size_t>(position);
+    const std::size_t above = std::min(below + 1, values.size() - 1);
+    return values[below] + (values[above] - values[below]) * (position - static_cast<double>(below));
+}
+
+RunSummary summarize(const std::vector<render::FrameStats>& stats, std::uint32_t warmup) {
+    RunSummary summary;
+    summary.frames = static_cast<std::uint32_t>(stats.size());
+    // Never leave every frame out: a short run still reports its last frames.
+    const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
+    std::vector<double> intervals, animate, record, total;
+    std::map<std::string, std::vector<double>> passes;
+    for (std::size_t i = first; i < stats.size(); ++i) {
+        const render::FrameStats& frame = stats[i];
+        if (frame.intervalMs > 0.0) intervals.push_back(frame.intervalMs);
+        animate.push_back(frame.animateMs);
+        record.push_back(frame.recordMs);
+        double sum = 0.0;
+        for (const gpu::PassTime& pass : frame.gpu) passes[pass.pass].push_back(pass.milliseconds), sum += pass.milliseconds;
+        total.push_back(sum);
+    }
+    summary.measuredFrames = static_cast<std::uint32_t>(stats.size() - first);
+    summary.medianFrameMs = median(intervals);
+    summary.p95FrameMs = percentile(intervals, 0.95);
+    summary.fps = summary.medianFrameMs > 0.0 ? 1000.0 / summary.medianFrameMs : 0.0;
+    summary.medianAnimateMs = median(animate);
+    summary.medianRecordMs = median(record);
+    for (auto& [pass, values] : passes) summary.medianGpuMs[pass] = median(values);
+    summary.medianGpuTotalMs = median(total);
+    return summary;
+}
+
+void printSummary(const RunSummary& s) {
+    std::printf("%s x %u, %s, %u frames (%u measured) on %s (%s)\n", s.model.c_str(), s.characters, s.method.c_str(),
+                s.frames, s.measuredFrames, s.device.c_str(), s.driver.c_str());
+    std::printf("  frame: median %.3f ms (%.1f fps), p95 %.3f ms  [wall clock between frame starts]\n",
+                s.medianFrameMs, s.fps, s.p95FrameMs);
+    std::printf("  cpu:   animate %.3f ms, record+submit %.3f ms\n", s.medianAnimateMs, s.medianRecordMs);
+    std::printf("  gpu:  ");
+    for (const auto& [pass, ms] : s.medianGpuMs) std::printf(" %s %.3f ms,", pass.c_str(), ms);
+    std::printf(" total %.3f ms  [timestamp queries]\n", s.medianGpuTotalMs);
+}
+
+void writeJson(const std::string& path, const RunSummary& s) {
+    nlohmann::json json;
+    json["model"] = s.model;
+    json["method"] = s.method;
+    json["characters"] = s.characters;
+    json["frames"] = s.frames;
+    json["measured_frames"] = s.measuredFrames;
+    json["fps"] = s.fps;
+    json["median_frame_ms"] = s.medianFrameMs;
+    json["p95_frame_ms"] = s.p95FrameMs;
+    json["frame_clock"] = "wall clock between frame starts";
+    json["median_cpu_animate_ms"] = s.medianAnimateMs;
+    json["median_cpu_record_ms"] = s.medianRecordMs;
+    json["median_gpu_ms"] = s.medianGpuMs;
+    json["median_gpu_total_ms"] = s.medianGpuTotalMs;
+    json["gpu_clock"] = "timestamp queries";
+    json["device"] = s.device;
+    json["driver"] = s.driver;
+    for (const skin::MemoryItem& item : s.memory) json["memory_bytes"][item.what] = item.bytes;
+    std::ofstream file(path);
+    if (!file) throw gpu::Error("cannot write " + path);
+    file << json.dump(2) << "\n";
+    if (!file) throw gpu::Error("cannot write " + path);
+}
+
+}  // namespace app

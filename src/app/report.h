@@ -1,0 +1,42 @@
+#pragma once
+// Turns per-frame statistics into the figures users read: median frame time, fps, per-pass GPU ms.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/crowd_renderer.h"
+#include "skin/skinning_method.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace app {
+
+struct RunSummary {
+    std::string model;
+    std::string method;
+    std::uint32_t characters = 0;
+    std::uint32_t frames = 0;
+    std::uint32_t measuredFrames = 0;
+    double medianFrameMs = 0.0;   // wall clock between frame starts, after warm-up
+    double p95FrameMs = 0.0;
+    double fps = 0.0;             // 1000 / medianFrameMs
+    double medianAnimateMs = 0.0; // CPU
+    double medianRecordMs = 0.0;  // CPU
+    std::map<std::string, double> medianGpuMs;  // per pass, from timestamp queries
+    double medianGpuTotalMs = 0.0;
+    std::string device;
+    std::string driver;
+    std::vector<skin::MemoryItem> memory;
+};
+
+double median(std::vector<double> values);
+double percentile(std::vector<double> values, double fraction);
+
+// Frames before `warmup` are left out of every median.
+RunSummary summarize(const std::vector<render::FrameStats>& stats, std::uint32_t warmup);
+
+void printSummary(const RunSummary& summary);
+// Throws gpu::Error naming the path when it cannot be written.
+void writeJson(const std::string& path, const RunSummary& summary);
+
+}  // namespace app

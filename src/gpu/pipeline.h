@@ -1,0 +1,46 @@
+#pragma once
+// Small free functions that create shader modules, layouts and graphics pipelines.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace gpu {
+
+class VulkanContext;
+
+VkShaderModule createShaderModule(const VulkanContext& context, std::span<const std::uint32_t> spirv);
+
+VkDescriptorSetLayout createSetLayout(const VulkanContext& context,
+                                      std::span<const VkDescriptorSetLayoutBinding> bindings);
+VkPipelineLayout createPipelineLayout(const VulkanContext& context, std::span<const VkDescriptorSetLayout> sets,
+                                      std::span<const VkPushConstantRange> pushConstants);
+
+struct GraphicsPipelineDesc {
+    std::span<const std::uint32_t> vertexShader;
+    std::span<const std::uint32_t> fragmentShader;
+    std::vector<VkVertexInputBindingDescription> bindings;
+    std::vector<VkVertexInputAttributeDescription> attributes;
+    std::vector<VkFormat> colorFormats;
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;  // no depth attachment when undefined
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    // Specialization constants of the vertex stage, ids 0, 1, ... in order.
+    std::vector<std::uint32_t> vertexConstants;
+};
+
+// Viewport and scissor are dynamic; rendering uses dynamic rendering with the given formats.
+VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc);
+
+// A descriptor pool big enough for `sets` sets of the given descriptor counts.
+VkDescriptorPool createDescriptorPool(const VulkanContext& context, std::span<const VkDescriptorPoolSize> sizes,
+                                      std::uint32_t sets);
+VkDescriptorSet allocateSet(const VulkanContext& context, VkDescriptorPool pool, VkDescriptorSetLayout layout);
+void writeBufferDescriptor(const VulkanContext& context, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
+
+void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent);
+
+}  // namespace gpu

@@ -1,0 +1,28 @@
+#pragma once
+// Vulkan failures as exceptions that say which call failed, where, and what the user can do.
+#include <stdexcept>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+namespace gpu {
+
+// A failure the user can act on (no device, out of memory, bad input): main() prints what() as
+// one line and exits non-zero.
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+const char* resultName(VkResult result);
+
+// Throws Error naming the call, the source location and a hint for the common failures.
+[[noreturn]] void throwVulkanError(VkResult result, const char* call, const char* file, int line);
+
+}  // namespace gpu
+
+#define VK_CHECK(call)                                                                   \
+    do {                                                                                 \
+        const VkResult vkCheckResult_ = (call);                                          \
+        if (vkCheckResult_ < 0) ::gpu::throwVulkanError(vkCheckResult_, #call, __FILE__, __LINE__); \
+    } while (0)

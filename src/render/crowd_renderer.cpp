@@ -1,0 +1,132 @@
+#include "render/crowd_renderer.h"
+
+#include <chrono>
+
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+#include "gpu/pipeline.h"
+
+namespace render {
+namespace {
+
+double nowMs() {
+    using namespace std::chrono;
+    return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd,
+                             const RendererOptions& options)
+    : context_(context),
+      crowd_(crowd),
+      buffers_(context, crowd.model(), crowd.size(), options.framesInFlight),
+      target_(context, options.size),
+      scene_(context, options.framesInFlight),
+      timer_(context, options.framesInFlight),
+      method_(skin::createSkinningMethod(options.method,
+                                         {context, buffers_, scene_.setLayout(), options.maxTargetDimension})),
+      frames_(options.framesInFlight) {
+    const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
+    camera = frameCrowd(crowd.center(), crowd.radius(), crowd.model().height(), aspect);
+    for (Frame& frame : frames_) {
+        VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        allocate.commandPool = context.commandPool;
+        allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        allocate.commandBufferCount = 1;
+        VK_CHECK(vkAllocateCommandBuffers(context.device, &allocate, &frame.cmd));
+        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(context.device, &fenceInfo, nullptr, &frame.fence));
+    }
+}
+
+CrowdRenderer::~CrowdRenderer() {
+    vkDeviceWaitIdle(context_.device);
+    for (Frame& frame : frames_) {
+        vkDestroyFence(context_.device, frame.fence, nullptr);
+        vkFreeCommandBuffers(context_.device, context_.commandPool, 1, &frame.cmd);
+    }
+}
+
+void CrowdRenderer::renderFrame(float time) {
+    const auto slot = static_cast<std::uint32_t>(frameIndex_++ % frames_.size());
+    Frame& frame = frames_[slot];
+    const double start = nowMs();
+    collect(frame, slot);  // the slot's previous frame must be done before its buffers are reused
+    frame.stats = {};
+    frame.stats.intervalMs = lastFrameStart_ < 0.0 ? 0.0 : start - lastFrameStart_;
+    lastFrameStart_ = start;
+
+    // 1. Animation: every character's clip sampled at its own time, bones written for the GPU.
+    const double animateStart = nowMs();
+    crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneStride());
+    const double recordStart = nowMs();
+    frame.stats.animateMs = recordStart - animateStart;
+
+    // 2-5. Upload, skin, draw, timestamps: recorded into one command buffer and submitted.
+    const float aspect = static_cast<float>(target_.extent().width) / static_cast<float>(target_.extent().height);
+    scene_.update(slot, makeSceneUniforms(camera.viewProjection(aspect), crowd_.model().materialColors,
+                                          0.5f / (camera.farPlane + 1.0f)));
+    VK_CHECK(vkResetCommandBuffer(frame.cmd, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
+    recordFrame(frame.cmd, slot);
+    VK_CHECK(vkEndCommandBuffer(frame.cmd));
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &frame.cmd;
+    VK_CHECK(vkQueueSubmit(context_.queue, 1, &submit, frame.fence));
+    frame.pending = true;
+    frame.stats.recordMs = nowMs() - recordStart;
+}
+
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot) {
+    timer_.begin(cmd, slot);
+    buffers_.recordBoneUpload(cmd, slot);
+    timer_.mark(cmd, "upload");
+    method_->recordSkinning(cmd, timer_);
+
+    const float clear[4] = {kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.0f};
+    target_.beginRendering(cmd, clear);
+    gpu::setViewportAndScissor(cmd, target_.extent());
+    const glm::vec3 center = crowd_.center();
+    const ScenePush push{glm::vec4(camera.eye, 1.0f),
+                         glm::vec4(center.x, 0.0f, center.z, camera.farPlane)};
+    scene_.recordGround(cmd, slot, push);
+    method_->recordDraw(cmd, scene_.set(slot), push);
+    target_.endRendering(cmd);
+    timer_.mark(cmd, "draw");
+}
+
+void CrowdRenderer::collect(Frame& frame, std::uint32_t slot) {
+    if (!frame.pending) return;
+    VK_CHECK(vkWaitForFences(context_.device, 1, &frame.fence, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(context_.device, 1, &frame.fence));
+    frame.pending = false;
+    frame.stats.gpu = timer_.results(slot);
+    stats_.push_back(frame.stats);
+}
+
+void CrowdRenderer::finish() {
+    // Collect in submission order so stats_ stays in frame order.
+    for (std::uint64_t i = 0; i < frames_.size(); ++i) {
+        const auto slot = static_cast<std::uint32_t>((frameIndex_ + i) % frames_.size());
+        collect(frames_[slot], slot);
+    }
+}
+
+Rgba8Image CrowdRenderer::readback() {
+    finish();
+    return target_.readback();
+}
+
+std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
+    std::vector<skin::MemoryItem> items = {{"bind-pose vertices and indices", buffers_.bindVertices().size + buffers_.indices().size},
+                                           {"bone matrices", buffers_.bones().size},
+                                           {"render target", target_.bytes()}};
+    for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
+    return items;
+}
+
+}  // namespace render

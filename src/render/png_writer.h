@@ -1,0 +1,21 @@
+#pragma once
+// Writes RGBA8 pixels as a PNG file.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace render {
+
+struct Rgba8Image {
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::vector<std::uint8_t> pixels;  // width * height * 4, rows top to bottom
+};
+
+// Throws gpu::Error naming the path when it cannot be written.
+void writePng(const std::string& path, const Rgba8Image& image);
+
+// Checks up front that `path` can be created, so a long run does not fail at its very end.
+void checkWritable(const std::string& path);
+
+}  // namespace render

@@ -1,0 +1,37 @@
+#pragma once
+// The offscreen image the scene is drawn into (sRGB colour + depth), and its readback.
+#include <vulkan/vulkan.h>
+
+#include "gpu/image.h"
+#include "render/png_writer.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+class RenderTarget {
+public:
+    RenderTarget(const gpu::VulkanContext& context, VkExtent2D extent);
+    ~RenderTarget();
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+
+    VkExtent2D extent() const { return color_.extent; }
+    // Transitions the images and begins dynamic rendering, clearing to `clearColor` (linear).
+    void beginRendering(VkCommandBuffer cmd, const float clearColor[4]);
+    // Ends rendering and leaves the colour image ready to be copied out.
+    void endRendering(VkCommandBuffer cmd);
+    // Copies the last rendered frame to the host (waits for the GPU).
+    Rgba8Image readback();
+    VkDeviceSize bytes() const { return color_.bytes + depth_.bytes; }
+
+private:
+    const gpu::VulkanContext& context_;
+    gpu::Image color_;
+    gpu::Image depth_;
+};
+
+}  // namespace render

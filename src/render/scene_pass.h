@@ -1,0 +1,52 @@
+#pragma once
+// What every method's draw shares: the per-frame scene uniforms (camera, light, palette), their
+// descriptor set, and the ground plane.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gpu/buffer.h"
+#include "gpu_types.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+// The clear colour behind everything and the colour distant things fade into (linear RGB).
+inline constexpr glm::vec3 kSkyColor{0.55f, 0.7f, 0.9f};
+
+// Push constants of the ground and draw fragment shaders.
+struct ScenePush {
+    glm::vec4 cameraPosition;
+    glm::vec4 groundArea;  // x, z: centre, w: half extent
+};
+
+class ScenePass {
+public:
+    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight);
+    ~ScenePass();
+    ScenePass(const ScenePass&) = delete;
+    ScenePass& operator=(const ScenePass&) = delete;
+
+    VkDescriptorSetLayout setLayout() const { return setLayout_; }
+    VkDescriptorSet set(std::uint32_t frameSlot) const { return sets_[frameSlot]; }
+    void update(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms);
+    void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
+
+private:
+    const gpu::VulkanContext& context_;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    std::vector<gpu::Buffer> uniforms_;
+    std::vector<VkDescriptorSet> sets_;
+    VkPipelineLayout groundLayout_ = VK_NULL_HANDLE;
+    VkPipeline groundPipeline_ = VK_NULL_HANDLE;
+};
+
+// Scene uniforms for a camera and a model's palette: sun from the upper left, pale sky, grass.
+gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
+                                     float fogDensity);
+
+}  // namespace render
