@@ -27,9 +27,9 @@ int run(const app::RenderOptions& options) {
     if (!options.json.empty()) render::checkWritable(options.json);
 
     const model::SkinnedModel model = app::loadModel(options.scene.model, options.scene.seed);
-    const crowd::Crowd crowd(model, app::buildCharacters(model, options.scene));
     gpu::VulkanContext context({options.validation, options.device, {}, false});
-    app::checkCrowdFits(context, model, crowd.size(), options.method, options.size);
+    app::checkCrowdFits(context, model, options.scene.count, options.method, options.size);
+    const crowd::Crowd crowd(model, app::buildCharacters(model, options.scene));
 
     render::RendererOptions rendererOptions;
     rendererOptions.size = options.size;

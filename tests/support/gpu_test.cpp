@@ -1,0 +1,59 @@
+#include "support/gpu_test.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include "gpu/buffer.h"
+#include "gpu/one_shot_commands.h"
+
+namespace test {
+
+void GpuTest::SetUp() {
+    // Tests pick the device like users do; CI has only lavapipe.
+    const char* device = std::getenv("CROWD_TEST_DEVICE");
+    context = std::make_unique<gpu::VulkanContext>(gpu::ContextOptions{true, device ? device : "", {}, false});
+}
+
+void GpuTest::TearDown() {
+    ASSERT_TRUE(context);
+    const std::uint64_t messages = context->validationMessages();
+    context.reset();  // object destruction is validated too
+    EXPECT_EQ(messages, 0u) << "validation reported messages (printed above)";
+}
+
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, const skin::SkinnedVertices& vertices,
+                                      std::uint32_t character, std::uint32_t vertexCount) {
+    const VkDeviceSize bytes = static_cast<VkDeviceSize>(vertexCount) * sizeof(glm::vec4);
+    gpu::Buffer staging = gpu::createBuffer(context, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                            gpu::MemoryUse::HostReadback, "test readback");
+    const VkDeviceSize first = static_cast<VkDeviceSize>(character) * vertices.characterStride * sizeof(glm::vec4);
+    gpu::runOneShot(context, [&](VkCommandBuffer cmd) {
+        const VkBufferCopy regions[2] = {{first, 0, bytes}, {vertices.normalsOffset + first, bytes, bytes}};
+        vkCmdCopyBuffer(cmd, vertices.buffer->buffer, staging.buffer, 2, regions);
+    });
+    ReadbackVertices result{std::vector<glm::vec4>(vertexCount), std::vector<glm::vec4>(vertexCount)};
+    std::memcpy(result.positions.data(), staging.mapped, bytes);
+    std::memcpy(result.normals.data(), static_cast<const char*>(staging.mapped) + bytes, bytes);
+    gpu::destroyBuffer(context, staging);
+    return result;
+}
+
+double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance) {
+    if (a.width != b.width || a.height != b.height || a.pixels.empty()) return 0.0;
+    std::size_t matching = 0;
+    for (std::size_t p = 0; p < a.pixels.size(); p += 4) {
+        bool same = true;
+        for (int c = 0; c < 4; ++c) same = same && std::abs(int(a.pixels[p + c]) - int(b.pixels[p + c])) <= tolerance;
+        matching += same;
+    }
+    return static_cast<double>(matching) / static_cast<double>(a.pixels.size() / 4);
+}
+
+std::string artifactPath(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "crowd-test-artifacts";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
+
+}  // namespace test

@@ -1,0 +1,95 @@
+// crowd-render as a user runs it: a small scene end to end, and one clear line for each bad value.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/run_program.h"
+
+namespace {
+
+const std::string kRender = CROWD_RENDER_BINARY;
+
+std::string tempFile(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("crowd-cli-" + std::to_string(::getpid()) + "-" + name)).string();
+}
+
+// A bad invocation exits non-zero with exactly one line on stderr that mentions `mention`.
+void expectOneLineError(const std::string& arguments, const std::string& mention, const std::string& environment = "") {
+    const test::ProgramResult r = test::runProgram(kRender, arguments, environment);
+    EXPECT_NE(r.exitCode, 0) << arguments;
+    EXPECT_LT(r.exitCode, 124) << arguments << ": crashed or hung";
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << arguments << " printed:\n" << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << arguments << " printed:\n" << r.err;
+    EXPECT_EQ(r.err.rfind("crowd-render: ", 0), 0u) << r.err;
+}
+
+}  // namespace
+
+TEST(CrowdRenderCli, SmallSceneWritesPngAndJsonWithValidationSilent) {
+    const std::string png = tempFile("small.png"), json = tempFile("small.json");
+    const test::ProgramResult r = test::runProgram(
+        kRender, "--count 4 --frames 3 --size 96x64 --validation --out " + png + " --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    EXPECT_GT(std::filesystem::file_size(png), 100u);
+    std::ifstream file(json);
+    const nlohmann::json j = nlohmann::json::parse(file);
+    EXPECT_EQ(j["characters"], 4);
+    EXPECT_EQ(j["method"], "two-pass");
+    EXPECT_GT(j["fps"].get<double>(), 0.0);
+    EXPECT_GT(j["median_frame_ms"].get<double>(), 0.0);
+    for (const char* pass : {"upload", "skin", "copy", "draw"}) EXPECT_TRUE(j["median_gpu_ms"].contains(pass)) << pass;
+    EXPECT_FALSE(j["device"].get<std::string>().empty());
+    EXPECT_FALSE(j["driver"].get<std::string>().empty());
+    std::filesystem::remove(png);
+    std::filesystem::remove(json);
+}
+
+TEST(CrowdRenderCli, HelpAndDeviceListSucceed) {
+    EXPECT_EQ(test::runProgram(kRender, "--help").exitCode, 0);
+    const test::ProgramResult list = test::runProgram(kRender, "--list-devices");
+    EXPECT_EQ(list.exitCode, 0);
+    EXPECT_NE(list.out.find("0: "), std::string::npos) << list.out;
+}
+
+TEST(CrowdRenderCli, BadCountsAreRejected) {
+    expectOneLineError("--count 0", "--count");
+    expectOneLineError("--count -5", "--count");
+    expectOneLineError("--count 12abc", "--count");
+    expectOneLineError("--count 99999999999", "--count");
+    expectOneLineError("--frames 0", "--frames");
+    expectOneLineError("--count", "needs a value");
+}
+
+TEST(CrowdRenderCli, CountThatCannotFitInDeviceMemoryIsRejected) {
+    expectOneLineError("--count 16777216 --frames 1 --out " + tempFile("huge.png"), "device memory");
+}
+
+TEST(CrowdRenderCli, UnknownModelAndMethodAreRejected) {
+    expectOneLineError("--model dragon", "dragon");
+    expectOneLineError("--method magic", "magic");
+    expectOneLineError("--clip moonwalk --count 1 --frames 1 --out " + tempFile("clip.png"), "moonwalk");
+    expectOneLineError("--bogus", "--bogus");
+}
+
+TEST(CrowdRenderCli, BadSizesAreRejected) {
+    expectOneLineError("--size 0x100", "--size");
+    expectOneLineError("--size 640", "--size");
+    expectOneLineError("--size 640x", "--size");
+    expectOneLineError("--size axb", "--size");
+}
+
+TEST(CrowdRenderCli, UnwritableOutputIsRejectedBeforeRendering) {
+    expectOneLineError("--out /nonexistent-dir/x.png", "/nonexistent-dir/x.png");
+    expectOneLineError("--json /nonexistent-dir/x.json --out " + tempFile("ok.png"), "/nonexistent-dir/x.json");
+}
+
+TEST(CrowdRenderCli, MissingVulkanDeviceIsReported) {
+    expectOneLineError("--count 1 --frames 1 --out " + tempFile("nodev.png"), "Vulkan",
+                       "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json");
+    expectOneLineError("--device 99 --count 1 --frames 1 --out " + tempFile("nodev.png"), "--device");
+    expectOneLineError("--device NoSuchGpu --count 1 --frames 1 --out " + tempFile("nodev.png"), "NoSuchGpu");
+}

@@ -1,0 +1,180 @@
+// Pass 1 (fragment-shader skinning) read back from the GPU equals the CPU reference; characters are
+// independent; both methods draw the same picture.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "app/crowd_app.h"
+#include "model/procedural_models.h"
+#include "render/crowd_renderer.h"
+#include "skin/cpu_skinning.h"
+#include "skin/fragment_skinning.h"
+#include "support/gpu_test.h"
+
+namespace {
+
+using test::GpuTest;
+
+// A few characters, each with its own clip, phase and speed, as the paper animates them.
+std::vector<crowd::Character> mixedCharacters(const model::SkinnedModel& model, std::uint32_t count) {
+    std::vector<crowd::Character> characters(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        crowd::Character& c = characters[i];
+        c.clip = i % static_cast<std::uint32_t>(model.clips.size());
+        c.timeOffset = 0.137f * static_cast<float>(i);
+        c.speed = 0.8f + 0.1f * static_cast<float>(i % 5);
+        c.position = glm::vec3(3.0f * static_cast<float>(i % 4), 0.0f, 3.0f * static_cast<float>(i / 4));
+        c.heading = 0.4f * static_cast<float>(i);
+    }
+    return characters;
+}
+
+// Largest distance between GPU pass-1 output and the CPU reference, over every vertex of every character.
+struct SkinError {
+    double position = 0.0;
+    double normal = 0.0;
+};
+
+SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
+                         const crowd::Crowd& crowd, std::uint32_t maxTargetDimension) {
+    render::RendererOptions options;
+    options.size = {64, 64};
+    options.method = skin::Method::TwoPass;
+    options.maxTargetDimension = maxTargetDimension;
+    render::CrowdRenderer renderer(context, crowd, options);
+    const float time = 0.75f;
+    renderer.renderFrame(time);
+    renderer.finish();
+
+    SkinError error;
+    std::vector<gpu::BoneRows> bones(model.skeleton.jointCount());
+    const auto vertexCount = static_cast<std::uint32_t>(model.vertices.size());
+    for (std::uint32_t c = 0; c < crowd.size(); ++c) {
+        crowd.animateCharacter(c, time, bones);
+        const std::vector<skin::CpuSkinnedVertex> expected = skin::skinOnCpu(model, bones);
+        const test::ReadbackVertices gpu =
+            test::readSkinnedCharacter(context, renderer.method().skinnedVertices(), c, vertexCount);
+        for (std::uint32_t v = 0; v < vertexCount; ++v) {
+            error.position = std::max(error.position, glm::length(glm::dvec3(gpu.positions[v]) - expected[v].position));
+            error.normal = std::max(error.normal, glm::length(glm::dvec3(gpu.normals[v]) - expected[v].normal));
+            EXPECT_EQ(gpu.normals[v].w, model.vertices[v].normal.w) << "material index lost at vertex " << v;
+        }
+    }
+    return error;
+}
+
+void expectPassOneMatchesCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
+                             std::uint32_t maxTargetDimension) {
+    const crowd::Crowd crowd(model, mixedCharacters(model, 6));
+    const SkinError error = compareWithCpu(context, model, crowd, maxTargetDimension);
+    // float32 skinning of coordinates up to ~10 m: a few ulps of 10 m is ~1e-6 m; allow 1e-5 of the height.
+    EXPECT_LE(error.position, 1e-5 * model.height()) << model.name;
+    EXPECT_LE(error.normal, 1e-5) << model.name;
+}
+
+}  // namespace
+
+TEST_F(GpuTest, TwoPassMatchesCpuReferenceSoldier) {
+    expectPassOneMatchesCpu(*context, model::makeSoldier(1), 0);
+}
+
+TEST_F(GpuTest, TwoPassMatchesCpuReferenceHorse) {
+    expectPassOneMatchesCpu(*context, model::makeHorse(1), 0);
+}
+
+TEST_F(GpuTest, TwoPassTiledTargetsMatchCpuReference) {
+    // A 256-texel limit wraps each character over several rows and splits the crowd into tiles,
+    // as a large crowd does against the real 16k-32k limits.
+    const model::SkinnedModel soldier = model::makeSoldier(1);
+    const std::uint32_t limit = 256;
+    const skin::SkinTargetLayout layout = skin::planSkinTargets(
+        static_cast<std::uint32_t>(soldier.vertices.size()), 6, limit);
+    ASSERT_GT(layout.rowsPerCharacter, 1u);
+    expectPassOneMatchesCpu(*context, soldier, limit);
+}
+
+TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
+    const model::SkinnedModel soldier = model::makeSoldier(1);
+    const crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
+    render::RendererOptions options;
+    options.size = {32, 32};
+    options.maxTargetDimension = 64;
+    render::CrowdRenderer renderer(*context, crowd, options);
+    const auto& layout = static_cast<skin::FragmentSkinning&>(renderer.method()).layout();
+    EXPECT_GT(layout.tileCount, 1u);
+    for (std::uint32_t t = 0; t < layout.tileCount; ++t) {
+        EXPECT_LE(layout.tileExtent(t).width, 64u);
+        EXPECT_LE(layout.tileExtent(t).height, 64u);
+    }
+}
+
+TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer) {
+    const model::SkinnedModel soldier = model::makeSoldier(1);
+    const std::uint32_t walk = static_cast<std::uint32_t>(soldier.findClip("walk"));
+    std::vector<crowd::Character> characters(3);
+    characters[0] = {walk, 0.2f, 1.0f, glm::vec3(0, 0, 0), 0.0f};
+    characters[1] = {walk, 0.2f, 1.0f, glm::vec3(4, 0, 0), 0.0f};  // same phase, elsewhere
+    characters[2] = {walk, 0.6f, 1.0f, glm::vec3(8, 0, 0), 0.0f};  // other phase
+    const crowd::Crowd crowd(soldier, characters);
+    render::RendererOptions options;
+    options.size = {32, 32};
+    render::CrowdRenderer renderer(*context, crowd, options);
+    renderer.renderFrame(0.3f);
+    renderer.finish();
+    const auto n = static_cast<std::uint32_t>(soldier.vertices.size());
+    std::vector<test::ReadbackVertices> read;
+    for (std::uint32_t c = 0; c < 3; ++c)
+        read.push_back(test::readSkinnedCharacter(*context, renderer.method().skinnedVertices(), c, n));
+    double equalPhase = 0.0, otherPhase = 0.0;
+    for (std::uint32_t v = 0; v < n; ++v) {
+        // Compare poses in each character's own frame: subtract its placement.
+        const glm::vec3 a = glm::vec3(read[0].positions[v]) - characters[0].position;
+        const glm::vec3 b = glm::vec3(read[1].positions[v]) - characters[1].position;
+        const glm::vec3 c = glm::vec3(read[2].positions[v]) - characters[2].position;
+        equalPhase = std::max<double>(equalPhase, glm::length(a - b));
+        otherPhase = std::max<double>(otherPhase, glm::length(a - c));
+    }
+    EXPECT_LE(equalPhase, 1e-5 * soldier.height());
+    EXPECT_GE(otherPhase, 0.05 * soldier.height()) << "a different phase must move the limbs visibly";
+}
+
+namespace {
+
+render::Rgba8Image renderScene(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
+                               std::uint32_t frames) {
+    render::RendererOptions options;
+    options.size = {192, 128};
+    options.method = method;
+    render::CrowdRenderer renderer(context, crowd, options);
+    for (std::uint32_t f = 0; f < frames; ++f) renderer.renderFrame(app::frameTime(f));
+    return renderer.readback();
+}
+
+void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const std::string& modelName) {
+    const model::SkinnedModel model = app::loadModel(modelName, 1);
+    app::SceneOptions scene;
+    scene.model = modelName;
+    scene.count = 16;
+    scene.clip = "random";
+    const crowd::Crowd crowd(model, app::buildCharacters(model, scene));
+    const render::Rgba8Image vs = renderScene(context, crowd, skin::Method::VertexShader, 3);
+    const render::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 3);
+    const double matching = test::fractionOfMatchingPixels(vs, twoPass, 2);
+    if (matching < 0.995) {
+        render::writePng(test::artifactPath(modelName + "-vs.png"), vs);
+        render::writePng(test::artifactPath(modelName + "-two-pass.png"), twoPass);
+    }
+    // Same math in both methods; only rounding (fused multiply-adds, stage differences) may move an
+    // edge pixel, so at least 99.5% of pixels agree within 2/255 per channel.
+    EXPECT_GE(matching, 0.995) << modelName << ": images left in " << test::artifactPath("");
+    // And the match is not trivial: the animated crowd visibly changes the picture a few frames later.
+    const render::Rgba8Image later = renderScene(context, crowd, skin::Method::TwoPass, 12);
+    EXPECT_LT(test::fractionOfMatchingPixels(twoPass, later, 2), 0.99) << "the crowd must be visible and moving";
+}
+
+}  // namespace
+
+TEST_F(GpuTest, VertexShaderAndTwoPassDrawTheSameSoldiers) { expectMethodsDrawTheSamePicture(*context, "soldier"); }
+
+TEST_F(GpuTest, VertexShaderAndTwoPassDrawTheSameHorses) { expectMethodsDrawTheSamePicture(*context, "horse"); }
