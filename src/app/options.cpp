@@ -46,7 +46,7 @@ VkExtent2D parseSize(const std::string& flag, const std::string& text) {
     return {width, height};
 }
 
-RenderOptions parseRenderOptions(const std::vector<std::string>& args) {
+RenderOptions parseRenderOptions(const std::vector<std::string>& args, const ExtraFlagParser& extra) {
     RenderOptions options;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string flag = args[i];
@@ -78,7 +78,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args) {
             const std::string name = next();
             if (!skin::parseMethod(name, options.method))
                 throw gpu::Error("--method: unknown method '" + name + "' (two-pass or vs)");
-        } else {
+        } else if (!extra || !extra(flag, next)) {
             throw gpu::Error("unknown option '" + args[i] + "' (see --help)");
         }
         if (options.out.empty()) throw gpu::Error("--out: empty file name");

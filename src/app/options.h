@@ -2,6 +2,7 @@
 // Command-line flags shared by crowd-render, crowd-view and crowd-bench, so the same command line
 // describes the same crowd in each.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,12 @@ struct RenderOptions {
     bool help = false;
 };
 
+// A program's own flags beyond the shared ones: returns true when it consumed `flag`, calling
+// `value()` to take the flag's value.
+using ExtraFlagParser = std::function<bool(const std::string& flag, const std::function<std::string()>& value)>;
+
 // Turns argv into options. Throws gpu::Error with a one-line message naming the bad flag or value.
-RenderOptions parseRenderOptions(const std::vector<std::string>& args);
+RenderOptions parseRenderOptions(const std::vector<std::string>& args, const ExtraFlagParser& extra = {});
 
 // Strict parsers for flag values (whole string, no sign, within [min, max]); throw gpu::Error.
 std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t min, std::uint32_t max);

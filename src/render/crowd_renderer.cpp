@@ -21,7 +21,8 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
     : context_(context),
       crowd_(crowd),
       buffers_(context, crowd.model(), crowd.size(), options.framesInFlight),
-      target_(context, options.size),
+      target_(std::make_unique<RenderTarget>(context, options.size)),
+      maxTargetDimension_(options.maxTargetDimension),
       scene_(context, options.framesInFlight),
       timer_(context, options.framesInFlight),
       method_(skin::createSkinningMethod(options.method,
@@ -48,7 +49,7 @@ CrowdRenderer::~CrowdRenderer() {
     }
 }
 
-void CrowdRenderer::renderFrame(float time) {
+void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     const auto slot = static_cast<std::uint32_t>(frameIndex_++ % frames_.size());
     Frame& frame = frames_[slot];
     const double start = nowMs();
@@ -64,39 +65,74 @@ void CrowdRenderer::renderFrame(float time) {
     frame.stats.animateMs = recordStart - animateStart;
 
     // 2-5. Upload, skin, draw, timestamps: recorded into one command buffer and submitted.
-    const float aspect = static_cast<float>(target_.extent().width) / static_cast<float>(target_.extent().height);
+    const float aspect = static_cast<float>(target_->extent().width) / static_cast<float>(target_->extent().height);
     scene_.update(slot, makeSceneUniforms(camera.viewProjection(aspect), crowd_.model().materialColors,
                                           0.5f / (camera.farPlane + 1.0f)));
     VK_CHECK(vkResetCommandBuffer(frame.cmd, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
-    recordFrame(frame.cmd, slot);
+    recordFrame(frame.cmd, slot, hooks);
     VK_CHECK(vkEndCommandBuffer(frame.cmd));
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &frame.cmd;
-    VK_CHECK(vkQueueSubmit(context_.queue, 1, &submit, frame.fence));
-    frame.pending = true;
+    submit(frame, hooks);
     frame.stats.recordMs = nowMs() - recordStart;
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot) {
+void CrowdRenderer::submit(Frame& frame, const PresentHooks* hooks) {
+    VkCommandBufferSubmitInfo command{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    command.commandBuffer = frame.cmd;
+    VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    submit.commandBufferInfoCount = 1;
+    submit.pCommandBufferInfos = &command;
+    if (hooks && hooks->waitSemaphore) {
+        wait.semaphore = hooks->waitSemaphore;
+        wait.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        submit.waitSemaphoreInfoCount = 1;
+        submit.pWaitSemaphoreInfos = &wait;
+    }
+    if (hooks && hooks->signalSemaphore) {
+        signal.semaphore = hooks->signalSemaphore;
+        signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        submit.signalSemaphoreInfoCount = 1;
+        submit.pSignalSemaphoreInfos = &signal;
+    }
+    VK_CHECK(vkQueueSubmit2(context_.queue, 1, &submit, frame.fence));
+    frame.pending = true;
+}
+
+void CrowdRenderer::resize(VkExtent2D size) {
+    finish();
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    target_.reset();
+    target_ = std::make_unique<RenderTarget>(context_, size);
+}
+
+void CrowdRenderer::setMethod(skin::Method method) {
+    finish();
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    method_.reset();
+    method_ = skin::createSkinningMethod(method, {context_, buffers_, scene_.setLayout(), maxTargetDimension_});
+}
+
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
     buffers_.recordBoneUpload(cmd, slot);
     timer_.mark(cmd, "upload");
     method_->recordSkinning(cmd, timer_);
 
     const float clear[4] = {kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.0f};
-    target_.beginRendering(cmd, clear);
-    gpu::setViewportAndScissor(cmd, target_.extent());
+    target_->beginRendering(cmd, clear);
+    gpu::setViewportAndScissor(cmd, target_->extent());
     const glm::vec3 center = crowd_.center();
     const ScenePush push{glm::vec4(camera.eye, 1.0f),
                          glm::vec4(center.x, 0.0f, center.z, camera.farPlane)};
     scene_.recordGround(cmd, slot, push);
     method_->recordDraw(cmd, scene_.set(slot), push);
-    target_.endRendering(cmd);
+    target_->endRendering(cmd);
     timer_.mark(cmd, "draw");
+    if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());
 }
 
 void CrowdRenderer::collect(Frame& frame, std::uint32_t slot) {
@@ -118,13 +154,13 @@ void CrowdRenderer::finish() {
 
 Rgba8Image CrowdRenderer::readback() {
     finish();
-    return target_.readback();
+    return target_->readback();
 }
 
 std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
     std::vector<skin::MemoryItem> items = {{"bind-pose vertices and indices", buffers_.bindVertices().size + buffers_.indices().size},
                                            {"bone matrices", buffers_.bones().size},
-                                           {"render target", target_.bytes()}};
+                                           {"render target", target_->bytes()}};
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }

@@ -2,7 +2,9 @@
 // One frame of the crowd, top to bottom: animate on the CPU -> upload bones -> skin (method) ->
 // draw ground and characters -> resolve timestamps. Headless: it renders into an offscreen target.
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -33,6 +35,15 @@ struct FrameStats {
     std::vector<gpu::PassTime> gpu;  // per pass, from timestamp queries
 };
 
+// What a presenter (the windowed viewer) adds to a frame: semaphores of its swapchain and commands
+// recorded after the scene, e.g. a blit of the scene image to the swapchain image and the UI.
+struct PresentHooks {
+    VkSemaphore waitSemaphore = VK_NULL_HANDLE;    // waited before the scene is written
+    VkSemaphore signalSemaphore = VK_NULL_HANDLE;  // signalled when the frame's commands are done
+    // The scene colour image is in VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, its writes visible to transfers.
+    std::function<void(VkCommandBuffer cmd, VkImage sceneColor, VkExtent2D extent)> recordAfterScene;
+};
+
 class CrowdRenderer {
 public:
     CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RendererOptions& options);
@@ -41,7 +52,13 @@ public:
     CrowdRenderer& operator=(const CrowdRenderer&) = delete;
 
     // Renders the crowd at animation time `time` seconds.
-    void renderFrame(float time);
+    void renderFrame(float time, const PresentHooks* hooks = nullptr);
+    // Recreates the offscreen target at a new size (waits for the GPU).
+    void resize(VkExtent2D size);
+    // Switches the skinning method (waits for the GPU).
+    void setMethod(skin::Method method);
+    // Hands over the statistics collected so far and starts a new list.
+    std::vector<FrameStats> takeStats() { return std::exchange(stats_, {}); }
     // Waits for every frame in flight and collects its statistics.
     void finish();
     Rgba8Image readback();
@@ -61,12 +78,14 @@ private:
         FrameStats stats;
     };
     void collect(Frame& frame, std::uint32_t slot);
-    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot);
+    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, const PresentHooks* hooks);
+    void submit(Frame& frame, const PresentHooks* hooks);
 
     const gpu::VulkanContext& context_;
     const crowd::Crowd& crowd_;
     CrowdBuffers buffers_;
-    RenderTarget target_;
+    std::unique_ptr<RenderTarget> target_;
+    std::uint32_t maxTargetDimension_;
     ScenePass scene_;
     gpu::GpuTimer timer_;
     std::unique_ptr<skin::SkinningMethod> method_;

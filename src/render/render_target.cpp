@@ -29,7 +29,7 @@ RenderTarget::~RenderTarget() {
 void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]) {
     // The previous frame's writes (and readback copy) must finish before this frame clears.
     gpu::imageBarrier(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                      {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, 0},
+                      {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0},
                       {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT},
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);

@@ -20,6 +20,7 @@ public:
     RenderTarget& operator=(const RenderTarget&) = delete;
 
     VkExtent2D extent() const { return color_.extent; }
+    VkImage colorImage() const { return color_.image; }
     // Transitions the images and begins dynamic rendering, clearing to `clearColor` (linear).
     void beginRendering(VkCommandBuffer cmd, const float clearColor[4]);
     // Ends rendering and leaves the colour image ready to be copied out.
