@@ -15,7 +15,7 @@ function(embed_shaders target shader_dir)
     set(output ${out_dir}/${base}.spv.h)
     add_custom_command(
       OUTPUT ${output}
-      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 -S ${stage} -I${shader_dir}
+      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 -S ${stage} -I${shader_dir}
               --vn ${variable}_spv -o ${output} ${source}
       DEPENDS ${source} ${headers}
       COMMENT "Compiling shader ${file_name}"

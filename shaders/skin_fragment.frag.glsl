@@ -5,6 +5,7 @@
 // world-space position and normal, which a copy then turns into pass 2's vertex buffer.
 #include "gpu_types.h"
 #include "skinning.glsl.inc"
+#include "skin_texel.glsl.inc"
 
 layout(push_constant) uniform Push { SkinPassParams params; };
 layout(std430, set = 0, binding = 0) readonly buffer BindPose { SkinVertex vertices[]; };
@@ -17,16 +18,12 @@ void main() {
     // Texel layout: each character owns `rowsPerCharacter` consecutive rows; its vertices run
     // along them left to right. Copied row by row, the image becomes a character-major vertex
     // buffer that the unmodified index buffer draws with vertexOffset = character * rowStride.
-    uvec2 texel = uvec2(gl_FragCoord.xy);
-    uint rowsPerCharacter = params.counts.z;
-    uint localCharacter = texel.y / rowsPerCharacter;
-    uint vertexIndex = (texel.y % rowsPerCharacter) * params.strides.x + texel.x;
-    if (localCharacter >= params.counts.x || vertexIndex >= params.counts.y) {
+    uint character, vertexIndex;
+    if (!texelToCharacterVertex(params, uvec2(gl_FragCoord.xy), character, vertexIndex)) {
         outPosition = vec4(0.0);  // padding texels past the last vertex: never drawn
         outNormal = vec4(0.0);
         return;
     }
-    uint character = params.counts.w + localCharacter;
     SkinVertex v = vertices[vertexIndex];
     uint base = character * params.strides.y;
     Skinned s = skinVertex(v, bones[base + v.joints.x], bones[base + v.joints.y],

@@ -6,6 +6,16 @@
 
 namespace app {
 
+namespace {
+
+std::string methodList() {
+    std::string list;
+    for (skin::Method m : skin::allMethods()) list += (list.empty() ? "" : ", ") + std::string(skin::methodName(m));
+    return list;
+}
+
+}  // namespace
+
 const char* renderUsage() {
     return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
 
@@ -13,7 +23,8 @@ usage: crowd-render [options]
   --model soldier|horse   built-in character (default soldier)
   --count N               characters, 1..16777216 (default 1024)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
-  --method two-pass|vs    skinning method (default two-pass)
+  --method NAME           skinning method: two-pass (default, the paper's), vs (the paper's baseline),
+                          vs-instanced, two-pass-direct, compute, static (no skinning: the ceiling)
   --frames N              frames to render (default 30)
   --size WxH              image size in pixels (default 1280x720)
   --out FILE.png          image of the last frame (default crowd.png)
@@ -77,7 +88,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--method") {
             const std::string name = next();
             if (!skin::parseMethod(name, options.method))
-                throw gpu::Error("--method: unknown method '" + name + "' (two-pass or vs)");
+                throw gpu::Error("--method: unknown method '" + name + "' (" + methodList() + ")");
         } else if (!extra || !extra(flag, next)) {
             throw gpu::Error("unknown option '" + args[i] + "' (see --help)");
         }

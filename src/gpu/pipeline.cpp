@@ -5,6 +5,19 @@
 
 namespace gpu {
 
+namespace {
+
+// Specialization entries for constants 0..n-1, each a 32-bit value; `entries` must outlive the info.
+VkSpecializationInfo specializationFor(std::span<const std::uint32_t> constants,
+                                       std::vector<VkSpecializationMapEntry>& entries) {
+    entries.clear();
+    for (std::uint32_t i = 0; i < constants.size(); ++i)
+        entries.push_back({i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+    return {static_cast<std::uint32_t>(entries.size()), entries.data(), constants.size_bytes(), constants.data()};
+}
+
+}  // namespace
+
 VkShaderModule createShaderModule(const VulkanContext& context, std::span<const std::uint32_t> spirv) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = spirv.size_bytes();
@@ -41,11 +54,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     VkShaderModule fragment = createShaderModule(context, desc.fragmentShader);
 
     std::vector<VkSpecializationMapEntry> entries;
-    for (std::uint32_t i = 0; i < desc.vertexConstants.size(); ++i)
-        entries.push_back({i, i * static_cast<std::uint32_t>(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
-    VkSpecializationInfo specialization{static_cast<std::uint32_t>(entries.size()), entries.data(),
-                                        desc.vertexConstants.size() * sizeof(std::uint32_t),
-                                        desc.vertexConstants.data()};
+    const VkSpecializationInfo specialization = specializationFor(desc.vertexConstants, entries);
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                  {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -110,6 +119,26 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     const VkResult result = vkCreateGraphicsPipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
     vkDestroyShaderModule(context.device, vertex, nullptr);
     vkDestroyShaderModule(context.device, fragment, nullptr);
+    VK_CHECK(result);
+    return pipeline;
+}
+
+
+VkPipeline createComputePipeline(const VulkanContext& context, std::span<const std::uint32_t> spirv,
+                                 VkPipelineLayout layout, std::span<const std::uint32_t> constants) {
+    VkShaderModule module = createShaderModule(context, spirv);
+    std::vector<VkSpecializationMapEntry> entries;
+    const VkSpecializationInfo specialization = specializationFor(constants, entries);
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.stage.pSpecializationInfo = constants.empty() ? nullptr : &specialization;
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult result = vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    vkDestroyShaderModule(context.device, module, nullptr);
     VK_CHECK(result);
     return pipeline;
 }

@@ -34,6 +34,10 @@ struct GraphicsPipelineDesc {
 // Viewport and scissor are dynamic; rendering uses dynamic rendering with the given formats.
 VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPipelineDesc& desc);
 
+// A compute pipeline; `constants` are specialization constants with ids 0, 1, ... in order.
+VkPipeline createComputePipeline(const VulkanContext& context, std::span<const std::uint32_t> spirv,
+                                 VkPipelineLayout layout, std::span<const std::uint32_t> constants);
+
 // A descriptor pool big enough for `sets` sets of the given descriptor counts.
 VkDescriptorPool createDescriptorPool(const VulkanContext& context, std::span<const VkDescriptorPoolSize> sizes,
                                       std::uint32_t sets);

@@ -60,7 +60,8 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
 
     // 1. Animation: every character's clip sampled at its own time, bones written for the GPU.
     const double animateStart = nowMs();
-    crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneStride());
+    const bool animate = method_->needsAnimation();
+    if (animate) crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneStride());
     const double recordStart = nowMs();
     frame.stats.animateMs = recordStart - animateStart;
 
@@ -72,7 +73,7 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
-    recordFrame(frame.cmd, slot, hooks);
+    recordFrame(frame.cmd, slot, animate, hooks);
     VK_CHECK(vkEndCommandBuffer(frame.cmd));
     submit(frame, hooks);
     frame.stats.recordMs = nowMs() - recordStart;
@@ -116,10 +117,12 @@ void CrowdRenderer::setMethod(skin::Method method) {
     method_ = skin::createSkinningMethod(method, {context_, buffers_, scene_.setLayout(), maxTargetDimension_});
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, const PresentHooks* hooks) {
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
-    buffers_.recordBoneUpload(cmd, slot);
-    timer_.mark(cmd, "upload");
+    if (uploadBones) {
+        buffers_.recordBoneUpload(cmd, slot);
+        timer_.mark(cmd, "upload");
+    }
     method_->recordSkinning(cmd, timer_);
 
     const float clear[4] = {kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.0f};

@@ -78,7 +78,7 @@ private:
         FrameStats stats;
     };
     void collect(Frame& frame, std::uint32_t slot);
-    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, const PresentHooks* hooks);
+    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks);
     void submit(Frame& frame, const PresentHooks* hooks);
 
     const gpu::VulkanContext& context_;

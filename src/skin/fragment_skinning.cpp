@@ -17,13 +17,6 @@ constexpr VkFormat kTargetFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkDeviceSize kTexelBytes = 16;
 }  // namespace
 
-std::uint32_t maxSkinTargetDimension(const gpu::VulkanContext& context, std::uint32_t requested) {
-    const VkPhysicalDeviceLimits& limits = context.properties.limits;
-    const std::uint32_t device =
-        std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxFramebufferHeight});
-    return requested ? std::min(requested, device) : device;
-}
-
 FragmentSkinning::FragmentSkinning(const MethodSetup& setup)
     : context_(setup.context), crowd_(setup.crowd) {
     layout_ = planSkinTargets(crowd_.vertexCount(), crowd_.characterCount(),
@@ -38,12 +31,8 @@ FragmentSkinning::FragmentSkinning(const MethodSetup& setup)
             tiles_.back().normal = gpu::createImage2D(context_, layout_.tileExtent(t), kTargetFormat, usage,
                                                       "skinned normals (RGBA32F target)");
         }
-        const VkDeviceSize streamBytes =
-            static_cast<VkDeviceSize>(layout_.characterCount) * layout_.characterStride() * kTexelBytes;
-        skinned_ = gpu::createBuffer(context_, 2 * streamBytes,
-                                     VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                     gpu::MemoryUse::DeviceLocal, "skinned vertex buffer");
+        skinned_ = std::make_unique<SkinnedVertexBuffer>(context_, layout_.characterCount, layout_.characterStride(),
+                                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         createPipeline();
         draw_ = std::make_unique<SkinnedDraw>(setup, layout_.characterStride());
     } catch (...) {
@@ -58,10 +47,9 @@ void FragmentSkinning::release() {
     draw_.reset();
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
     if (pipelineLayout_) vkDestroyPipelineLayout(context_.device, pipelineLayout_, nullptr);
-    if (pool_) vkDestroyDescriptorPool(context_.device, pool_, nullptr);
-    if (setLayout_) vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
-    pipeline_ = VK_NULL_HANDLE, pipelineLayout_ = VK_NULL_HANDLE, pool_ = VK_NULL_HANDLE, setLayout_ = VK_NULL_HANDLE;
-    gpu::destroyBuffer(context_, skinned_);
+    pipeline_ = VK_NULL_HANDLE, pipelineLayout_ = VK_NULL_HANDLE;
+    descriptors_.reset();
+    skinned_.reset();
     for (Tile& tile : tiles_) {
         gpu::destroyImage(context_, tile.normal);
         gpu::destroyImage(context_, tile.position);
@@ -70,19 +58,12 @@ void FragmentSkinning::release() {
 }
 
 void FragmentSkinning::createPipeline() {
-    const VkDescriptorSetLayoutBinding bindings[2] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
-    setLayout_ = gpu::createSetLayout(context_, bindings);
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
-    pool_ = gpu::createDescriptorPool(context_, {&size, 1}, 1);
-    set_ = gpu::allocateSet(context_, pool_, setLayout_);
-    gpu::writeBufferDescriptor(context_, set_, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, crowd_.bindVertices().buffer, 0,
-                               VK_WHOLE_SIZE);
-    gpu::writeBufferDescriptor(context_, set_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, crowd_.bones().buffer, 0,
-                               VK_WHOLE_SIZE);
+    const gpu::BufferBinding bindings[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, crowd_.bindVertices().buffer},
+                                            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, crowd_.bones().buffer}};
+    descriptors_ = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_FRAGMENT_BIT, bindings);
+    const VkDescriptorSetLayout setLayout = descriptors_->layout();
     const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(gpu::SkinPassParams)};
-    pipelineLayout_ = gpu::createPipelineLayout(context_, {&setLayout_, 1}, {&push, 1});
+    pipelineLayout_ = gpu::createPipelineLayout(context_, {&setLayout, 1}, {&push, 1});
     gpu::GraphicsPipelineDesc desc;
     desc.vertexShader = skin_fragment_vert_spv;
     desc.fragmentShader = skin_fragment_frag_spv;
@@ -117,12 +98,10 @@ void FragmentSkinning::recordTile(VkCommandBuffer cmd, std::uint32_t t) {
     info.pColorAttachments = attachments;
     vkCmdBeginRendering(cmd, &info);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set_, 0, nullptr);
+    const VkDescriptorSet set = descriptors_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
     gpu::setViewportAndScissor(cmd, extent);
-    gpu::SkinPassParams params{};
-    params.counts = {layout_.charactersInTile(t), layout_.vertexCount, layout_.rowsPerCharacter,
-                     layout_.firstCharacter(t)};
-    params.strides = {layout_.width, crowd_.boneStride(), 0, 0};
+    const gpu::SkinPassParams params = skinPassParams(layout_, t, crowd_.boneStride());
     vkCmdPushConstants(cmd, pipelineLayout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof params, &params);
     vkCmdDraw(cmd, 3, 1, 0, 0);  // the full-target triangle
     vkCmdEndRendering(cmd);
@@ -135,10 +114,9 @@ void FragmentSkinning::recordCopies(VkCommandBuffer cmd) {
                               {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
                               {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
                               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-    // The previous frame's draw must have read the vertex buffer before the copy overwrites it.
-    gpu::bufferBarrier(cmd, skinned_.buffer, {VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, 0},
-                       {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-    const VkDeviceSize normalsOffset = skinnedVertices().normalsOffset;
+    const gpu::Access copyWrite{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    skinned_->barrierBeforeWrite(cmd, copyWrite);
+    const VkDeviceSize normalsOffset = skinned_->streamBytes();
     for (std::uint32_t t = 0; t < layout_.tileCount; ++t) {
         VkBufferImageCopy region{};
         region.bufferOffset =
@@ -146,15 +124,13 @@ void FragmentSkinning::recordCopies(VkCommandBuffer cmd) {
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         const VkExtent2D extent = layout_.tileExtent(t);
         region.imageExtent = {extent.width, extent.height, 1};
-        vkCmdCopyImageToBuffer(cmd, tiles_[t].position.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, skinned_.buffer, 1,
-                               &region);
+        vkCmdCopyImageToBuffer(cmd, tiles_[t].position.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               skinned_->buffer(), 1, &region);
         region.bufferOffset += normalsOffset;
-        vkCmdCopyImageToBuffer(cmd, tiles_[t].normal.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, skinned_.buffer, 1,
-                               &region);
+        vkCmdCopyImageToBuffer(cmd, tiles_[t].normal.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, skinned_->buffer(),
+                               1, &region);
     }
-    gpu::bufferBarrier(cmd, skinned_.buffer, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                       {VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                        VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT});
+    skinned_->barrierAfterWrite(cmd, copyWrite);
 }
 
 void FragmentSkinning::recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) {
@@ -168,15 +144,13 @@ void FragmentSkinning::recordDraw(VkCommandBuffer cmd, VkDescriptorSet sceneSet,
     draw_->record(cmd, sceneSet, push, skinnedVertices());
 }
 
-SkinnedVertices FragmentSkinning::skinnedVertices() const {
-    return {&skinned_, skinned_.size / 2, layout_.characterStride()};
-}
+SkinnedVertices FragmentSkinning::skinnedVertices() const { return skinned_->vertices(); }
 
 std::vector<MemoryItem> FragmentSkinning::memory() const {
     VkDeviceSize images = 0;
     for (const Tile& tile : tiles_) images += tile.position.bytes + tile.normal.bytes;
     return {{"RGBA32F skinning targets", images},
-            {"skinned vertex buffer", skinned_.size},
+            {"skinned vertex buffer", skinned_->bytes()},
             {"draw commands", draw_->indirectBytes()}};
 }
 

@@ -5,10 +5,11 @@
 #include <memory>
 #include <vector>
 
-#include "gpu/buffer.h"
+#include "gpu/descriptor_bundle.h"
 #include "gpu/image.h"
 #include "skin/skin_target_layout.h"
 #include "skin/skinned_draw.h"
+#include "skin/skinned_vertex_buffer.h"
 #include "skin/skinning_method.h"
 
 namespace skin {
@@ -39,16 +40,11 @@ private:
     const render::CrowdBuffers& crowd_;
     SkinTargetLayout layout_;
     std::vector<Tile> tiles_;
-    gpu::Buffer skinned_;  // positions of every character, then normals: pass 2's vertex buffer
-    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    std::unique_ptr<SkinnedVertexBuffer> skinned_;
+    std::unique_ptr<gpu::DescriptorBundle> descriptors_;
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     std::unique_ptr<SkinnedDraw> draw_;
 };
-
-// The largest skinning target side the device supports (image and framebuffer limits).
-std::uint32_t maxSkinTargetDimension(const gpu::VulkanContext& context, std::uint32_t requested);
 
 }  // namespace skin

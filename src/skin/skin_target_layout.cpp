@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 
 namespace skin {
@@ -28,6 +29,21 @@ SkinTargetLayout planSkinTargets(std::uint32_t vertexCount, std::uint32_t charac
     layout.charactersPerTile = std::min(characterCount, maxDimension / layout.rowsPerCharacter);
     layout.tileCount = (characterCount + layout.charactersPerTile - 1) / layout.charactersPerTile;
     return layout;
+}
+
+gpu::SkinPassParams skinPassParams(const SkinTargetLayout& layout, std::uint32_t tile, std::uint32_t boneStride) {
+    gpu::SkinPassParams params{};
+    params.counts = {layout.charactersInTile(tile), layout.vertexCount, layout.rowsPerCharacter,
+                     layout.firstCharacter(tile)};
+    params.strides = {layout.width, boneStride, 0, 0};
+    return params;
+}
+
+std::uint32_t maxSkinTargetDimension(const gpu::VulkanContext& context, std::uint32_t requested) {
+    const VkPhysicalDeviceLimits& limits = context.properties.limits;
+    const std::uint32_t device =
+        std::min({limits.maxImageDimension2D, limits.maxFramebufferWidth, limits.maxFramebufferHeight});
+    return requested ? std::min(requested, device) : device;
 }
 
 }  // namespace skin

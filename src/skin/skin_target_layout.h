@@ -14,6 +14,10 @@
 
 #include <vulkan/vulkan.h>
 
+#include "gpu_types.h"
+
+namespace gpu { class VulkanContext; }
+
 namespace skin {
 
 struct SkinTargetLayout {
@@ -33,5 +37,11 @@ struct SkinTargetLayout {
 
 // Plans the targets for a crowd; maxDimension is the device's largest image and framebuffer side.
 SkinTargetLayout planSkinTargets(std::uint32_t vertexCount, std::uint32_t characterCount, std::uint32_t maxDimension);
+
+// Push constants of pass 1 for one tile of the layout.
+gpu::SkinPassParams skinPassParams(const SkinTargetLayout& layout, std::uint32_t tile, std::uint32_t boneStride);
+
+// The largest skinning target side the device supports (image and framebuffer limits).
+std::uint32_t maxSkinTargetDimension(const gpu::VulkanContext& context, std::uint32_t requested);
 
 }  // namespace skin

@@ -19,9 +19,10 @@ namespace render { class CrowdBuffers; }
 
 namespace skin {
 
-enum class Method { VertexShader, TwoPass };
+enum class Method { VertexShader, VertexShaderInstanced, TwoPass, TwoPassDirect, Compute, Static };
 
-// "vs", "two-pass"; parseMethod returns false for an unknown name.
+// "vs", "vs-instanced", "two-pass", "two-pass-direct", "compute", "static"; parseMethod returns false
+// for an unknown name.
 const char* methodName(Method method);
 bool parseMethod(const std::string& name, Method& method);
 std::vector<Method> allMethods();
@@ -57,6 +58,9 @@ public:
     // Buffers and images this method allocated for the crowd (beyond the shared crowd buffers).
     virtual std::vector<MemoryItem> memory() const = 0;
     virtual SkinnedVertices skinnedVertices() const { return {}; }
+    // False once the method no longer reads bones (the static ceiling): the frame then skips
+    // animation and the bone upload.
+    virtual bool needsAnimation() const { return true; }
 };
 
 std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const MethodSetup& setup);

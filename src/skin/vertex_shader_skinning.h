@@ -4,6 +4,7 @@
 // (the Vulkan counterpart of loading the paper's constant registers before each draw).
 #include <vector>
 
+#include "gpu/descriptor_bundle.h"
 #include "skin/skinning_method.h"
 
 namespace skin {
@@ -21,9 +22,7 @@ public:
 private:
     const gpu::VulkanContext& context_;
     const render::CrowdBuffers& crowd_;
-    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    gpu::DescriptorBundle bones_;
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };

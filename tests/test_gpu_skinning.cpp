@@ -1,5 +1,5 @@
-// Pass 1 (fragment-shader skinning) read back from the GPU equals the CPU reference; characters are
-// independent; both methods draw the same picture.
+// Pass 1 (fragment-shader skinning) and the other skinning passes read back from the GPU equal the
+// CPU reference; characters are independent; every method draws the same picture.
 #include <algorithm>
 #include <cmath>
 
@@ -37,10 +37,10 @@ struct SkinError {
 };
 
 SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                         const crowd::Crowd& crowd, std::uint32_t maxTargetDimension) {
+                         const crowd::Crowd& crowd, std::uint32_t maxTargetDimension, skin::Method method) {
     render::RendererOptions options;
     options.size = {64, 64};
-    options.method = skin::Method::TwoPass;
+    options.method = method;
     options.maxTargetDimension = maxTargetDimension;
     render::CrowdRenderer renderer(context, crowd, options);
     const float time = 0.75f;
@@ -65,12 +65,12 @@ SkinError compareWithCpu(const gpu::VulkanContext& context, const model::Skinned
 }
 
 void expectPassOneMatchesCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                             std::uint32_t maxTargetDimension) {
+                             std::uint32_t maxTargetDimension, skin::Method method = skin::Method::TwoPass) {
     const crowd::Crowd crowd(model, mixedCharacters(model, 6));
-    const SkinError error = compareWithCpu(context, model, crowd, maxTargetDimension);
+    const SkinError error = compareWithCpu(context, model, crowd, maxTargetDimension, method);
     // float32 skinning of coordinates up to ~10 m: a few ulps of 10 m is ~1e-6 m; allow 1e-5 of the height.
-    EXPECT_LE(error.position, 1e-5 * model.height()) << model.name;
-    EXPECT_LE(error.normal, 1e-5) << model.name;
+    EXPECT_LE(error.position, 1e-5 * model.height()) << model.name << " " << skin::methodName(method);
+    EXPECT_LE(error.normal, 1e-5) << model.name << " " << skin::methodName(method);
 }
 
 }  // namespace
@@ -92,6 +92,16 @@ TEST_F(GpuTest, TwoPassTiledTargetsMatchCpuReference) {
         static_cast<std::uint32_t>(soldier.vertices.size()), 6, limit);
     ASSERT_GT(layout.rowsPerCharacter, 1u);
     expectPassOneMatchesCpu(*context, soldier, limit);
+}
+
+TEST_F(GpuTest, DirectFragmentAndComputeSkinningMatchCpuReference) {
+    for (const char* name : {"soldier", "horse"}) {
+        const model::SkinnedModel model = app::loadModel(name, 1);
+        expectPassOneMatchesCpu(*context, model, 0, skin::Method::TwoPassDirect);
+        expectPassOneMatchesCpu(*context, model, 256, skin::Method::TwoPassDirect);  // tiled
+        expectPassOneMatchesCpu(*context, model, 0, skin::Method::Compute);
+        expectPassOneMatchesCpu(*context, model, 0, skin::Method::Static);  // skins its first frame
+    }
 }
 
 TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
@@ -158,16 +168,21 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
     scene.count = 16;
     scene.clip = "random";
     const crowd::Crowd crowd(model, app::buildCharacters(model, scene));
-    const render::Rgba8Image vs = renderScene(context, crowd, skin::Method::VertexShader, 3);
-    const render::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 3);
-    const double matching = test::fractionOfMatchingPixels(vs, twoPass, 2);
-    if (matching < 0.995) {
-        render::writePng(test::artifactPath(modelName + "-vs.png"), vs);
-        render::writePng(test::artifactPath(modelName + "-two-pass.png"), twoPass);
+    // One frame: "static" skins only its first frame, so every method shows the same poses there.
+    const render::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 1);
+    for (skin::Method method : skin::allMethods()) {
+        if (method == skin::Method::TwoPass) continue;
+        const render::Rgba8Image other = renderScene(context, crowd, method, 1);
+        const double matching = test::fractionOfMatchingPixels(other, twoPass, 2);
+        if (matching < 0.995) {
+            render::writePng(test::artifactPath(modelName + "-" + skin::methodName(method) + ".png"), other);
+            render::writePng(test::artifactPath(modelName + "-two-pass.png"), twoPass);
+        }
+        // Same math in every method; only rounding (fused multiply-adds, stage differences) may move
+        // an edge pixel, so at least 99.5% of pixels agree within 2/255 per channel.
+        EXPECT_GE(matching, 0.995) << modelName << " " << skin::methodName(method) << ": images left in "
+                                   << test::artifactPath("");
     }
-    // Same math in both methods; only rounding (fused multiply-adds, stage differences) may move an
-    // edge pixel, so at least 99.5% of pixels agree within 2/255 per channel.
-    EXPECT_GE(matching, 0.995) << modelName << ": images left in " << test::artifactPath("");
     // And the match is not trivial: the animated crowd visibly changes the picture a few frames later.
     const render::Rgba8Image later = renderScene(context, crowd, skin::Method::TwoPass, 12);
     EXPECT_LT(test::fractionOfMatchingPixels(twoPass, later, 2), 0.99) << "the crowd must be visible and moving";
@@ -175,6 +190,6 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
 
 }  // namespace
 
-TEST_F(GpuTest, VertexShaderAndTwoPassDrawTheSameSoldiers) { expectMethodsDrawTheSamePicture(*context, "soldier"); }
+TEST_F(GpuTest, AllMethodsDrawTheSameSoldiers) { expectMethodsDrawTheSamePicture(*context, "soldier"); }
 
-TEST_F(GpuTest, VertexShaderAndTwoPassDrawTheSameHorses) { expectMethodsDrawTheSamePicture(*context, "horse"); }
+TEST_F(GpuTest, AllMethodsDrawTheSameHorses) { expectMethodsDrawTheSamePicture(*context, "horse"); }
