@@ -57,7 +57,7 @@ void printSummary(const RunSummary& s) {
     std::printf("  cpu:   animate %.3f ms, record+submit %.3f ms\n", s.medianAnimateMs, s.medianRecordMs);
     std::printf("  gpu:  ");
     for (const auto& [pass, ms] : s.medianGpuMs) std::printf(" %s %.3f ms,", pass.c_str(), ms);
-    std::printf(" total %.3f ms  [timestamp queries]\n", s.medianGpuTotalMs);
+    std::printf(" total %.3f ms  [%s]\n", s.medianGpuTotalMs, s.passClock.c_str());
 }
 
 void writeJson(const std::string& path, const RunSummary& s) {
@@ -75,7 +75,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["median_cpu_record_ms"] = s.medianRecordMs;
     json["median_gpu_ms"] = s.medianGpuMs;
     json["median_gpu_total_ms"] = s.medianGpuTotalMs;
-    json["gpu_clock"] = "timestamp queries";
+    json["gpu_clock"] = s.passClock;
     json["device"] = s.device;
     json["driver"] = s.driver;
     for (const skin::MemoryItem& item : s.memory) json["memory_bytes"][item.what] = item.bytes;

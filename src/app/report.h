@@ -22,7 +22,8 @@ struct RunSummary {
     double fps = 0.0;             // 1000 / medianFrameMs
     double medianAnimateMs = 0.0; // CPU
     double medianRecordMs = 0.0;  // CPU
-    std::map<std::string, double> medianGpuMs;  // per pass, from timestamp queries
+    std::map<std::string, double> medianGpuMs;  // per pass, from `passClock`
+    std::string passClock = "timestamp queries";
     double medianGpuTotalMs = 0.0;
     std::string device;
     std::string driver;

@@ -1,6 +1,11 @@
 #pragma once
-// Per-pass GPU time from timestamp queries: a frame writes named marks, the time of a pass is the
-// difference between its mark and the previous one.
+// Per-pass GPU time: a frame writes named marks, the time of a pass is the difference between its
+// mark and the previous one. Two clocks:
+// - TimestampQueries: vkCmdWriteTimestamp2 after all earlier work; frames stay pipelined.
+// - FenceWallClock: each mark ends the command buffer, submits it, waits on a fence and times
+//   submit-to-signal on the host, then begins the buffer again. Serializes the frame, but is right
+//   on drivers whose timestamps do not bracket the work (lavapipe and compute dispatches).
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,15 +21,20 @@ struct PassTime {
     double milliseconds;
 };
 
+enum class PassClock { TimestampQueries, FenceWallClock };
+const char* passClockName(PassClock clock);
+
 class GpuTimer {
 public:
     // One query pool per frame in flight, `maxMarks` marks per frame.
-    GpuTimer(const VulkanContext& context, std::uint32_t framesInFlight, std::uint32_t maxMarks = 16);
+    GpuTimer(const VulkanContext& context, std::uint32_t framesInFlight, PassClock clock = PassClock::TimestampQueries,
+             std::uint32_t maxMarks = 16);
     ~GpuTimer();
     GpuTimer(const GpuTimer&) = delete;
     GpuTimer& operator=(const GpuTimer&) = delete;
 
-    bool available() const { return periodNs_ > 0.0; }
+    bool available() const { return clock_ == PassClock::FenceWallClock || periodNs_ > 0.0; }
+    PassClock clock() const { return clock_; }
     // Starts a frame's marks; the first mark is "start".
     void begin(VkCommandBuffer cmd, std::uint32_t frameSlot);
     // Writes a timestamp once all earlier commands have finished; the pass named ends here.
@@ -33,7 +43,12 @@ public:
     std::vector<PassTime> results(std::uint32_t frameSlot) const;
 
 private:
+    void markByFence(VkCommandBuffer cmd, const std::string& pass);
+
     const VulkanContext& context_;
+    PassClock clock_;
+    VkFence fence_ = VK_NULL_HANDLE;
+    std::vector<std::vector<PassTime>> fenceTimes_;
     std::vector<VkQueryPool> pools_;
     std::vector<std::vector<std::string>> names_;
     std::uint32_t maxMarks_;

@@ -24,7 +24,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       target_(std::make_unique<RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
       scene_(context, options.framesInFlight),
-      timer_(context, options.framesInFlight),
+      timer_(context, options.framesInFlight, options.passClock),
       method_(skin::createSkinningMethod(options.method,
                                          {context, buffers_, scene_.setLayout(), options.maxTargetDimension})),
       frames_(options.framesInFlight) {

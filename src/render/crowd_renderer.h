@@ -26,6 +26,7 @@ struct RendererOptions {
     skin::Method method = skin::Method::TwoPass;
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
+    gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
 };
 
 struct FrameStats {

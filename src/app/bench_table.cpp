@@ -1,0 +1,143 @@
+#include "app/bench_table.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "gpu/buffer.h"
+#include "gpu/vulkan_error.h"
+
+namespace app {
+namespace {
+
+const char* const kPasses[] = {"upload", "skin", "copy", "draw"};
+
+double passMs(const BenchResult& r, const char* pass) {
+    const auto it = r.passes.medianGpuMs.find(pass);
+    return it == r.passes.medianGpuMs.end() ? 0.0 : it->second;
+}
+
+const BenchResult* find(const std::vector<BenchResult>& results, const std::string& model, const std::string& method,
+                        std::uint32_t count) {
+    for (const BenchResult& r : results)
+        if (r.model == model && r.method == method && r.count == count) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
+double ratioToStatic(const std::vector<BenchResult>& results, const BenchResult& result) {
+    const BenchResult* ceiling = find(results, result.model, "static", result.count);
+    if (!ceiling || !ceiling->ok || !result.ok || ceiling->frame.medianFrameMs <= 0.0) return 0.0;
+    return result.frame.medianFrameMs / ceiling->frame.medianFrameMs;
+}
+
+double skinVerticesPerSecond(const BenchResult& result) {
+    const double ms = passMs(result, "skin");
+    if (ms <= 0.0 || result.method == "static") return 0.0;
+    return static_cast<double>(result.count) * result.vertices / (ms * 1e-3);
+}
+
+std::uint64_t memoryBytes(const BenchResult& result) {
+    std::uint64_t total = 0;
+    for (const skin::MemoryItem& item : result.frame.memory) total += item.bytes;
+    return total;
+}
+
+void printTable1(const std::vector<BenchResult>& results, const std::vector<std::string>& models,
+                 const std::vector<std::string>& methods, const std::vector<std::uint32_t>& counts) {
+    for (const std::string& model : models) {
+        std::printf("\nTable 1 (%s): frames per second, median of measured frames\n", model.c_str());
+        std::printf("%10s", "characters");
+        for (const std::string& method : methods) std::printf(" %15s", method.c_str());
+        std::printf("\n");
+        for (std::uint32_t count : counts) {
+            std::printf("%10u", count);
+            for (const std::string& method : methods) {
+                const BenchResult* r = find(results, model, method, count);
+                if (r && r->ok) std::printf(" %15.1f", r->frame.fps);
+                else std::printf(" %15s", "-");
+            }
+            std::printf("\n");
+        }
+    }
+}
+
+void printPassTable(const std::vector<BenchResult>& results) {
+    std::printf("\nPer pass (GPU ms, median) and cost of skinning relative to the static ceiling\n");
+    std::printf("%-8s %-16s %8s %9s %9s %7s %8s %8s %8s %8s %9s %9s %10s  %s\n", "model", "method", "chars", "frame ms",
+                "p95 ms", "/static", "upload", "skin", "copy", "draw", "Gvert/s", "cpu anim", "memory", "pass clock");
+    for (const BenchResult& r : results) {
+        if (!r.ok) {
+            std::printf("%-8s %-16s %8u  skipped: %s\n", r.model.c_str(), r.method.c_str(), r.count, r.error.c_str());
+            continue;
+        }
+        std::printf("%-8s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s  %s\n", r.model.c_str(),
+                    r.method.c_str(), r.count, r.frame.medianFrameMs, r.frame.p95FrameMs, ratioToStatic(results, r),
+                    passMs(r, "upload"), passMs(r, "skin"), passMs(r, "copy"), passMs(r, "draw"),
+                    skinVerticesPerSecond(r) * 1e-9, r.frame.medianAnimateMs, gpu::formatBytes(memoryBytes(r)).c_str(),
+                    r.passes.passClock.c_str());
+    }
+}
+
+void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
+    std::ofstream file(path);
+    if (!file) throw gpu::Error("cannot write " + path);
+    file << "model,method,characters,vertices,triangles,status,median_frame_ms,p95_frame_ms,fps,ratio_to_static,"
+            "gpu_upload_ms,gpu_skin_ms,gpu_copy_ms,gpu_draw_ms,gpu_total_ms,pass_clock,skin_vertices_per_s,"
+            "cpu_animate_ms,cpu_record_ms,memory_bytes,frames,warmup,width,height,device,driver,commit,date\n";
+    for (const BenchResult& r : results) {
+        file << r.model << ',' << r.method << ',' << r.count << ',' << r.vertices << ',' << r.triangles << ','
+             << (r.ok ? "ok" : "skipped") << ',' << r.frame.medianFrameMs << ',' << r.frame.p95FrameMs << ','
+             << r.frame.fps << ',' << ratioToStatic(results, r);
+        for (const char* pass : kPasses) file << ',' << passMs(r, pass);
+        file << ',' << r.passes.medianGpuTotalMs << ',' << r.passes.passClock << ',' << skinVerticesPerSecond(r) << ','
+             << r.frame.medianAnimateMs << ',' << r.frame.medianRecordMs << ',' << memoryBytes(r) << ','
+             << meta.frames << ',' << meta.warmup << ',' << meta.width << ',' << meta.height << ",\"" << meta.device
+             << "\",\"" << meta.driver << "\"," << meta.commit << ',' << meta.date << '\n';
+    }
+    if (!file) throw gpu::Error("cannot write " + path);
+}
+
+void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
+    nlohmann::json json;
+    json["device"] = meta.device;
+    json["driver"] = meta.driver;
+    json["commit"] = meta.commit;
+    json["date"] = meta.date;
+    json["command"] = meta.command;
+    json["frames"] = meta.frames;
+    json["warmup"] = meta.warmup;
+    json["size"] = {meta.width, meta.height};
+    json["frame_clock"] = "wall clock between frame starts, frames pipelined (2 in flight)";
+    json["results"] = nlohmann::json::array();
+    for (const BenchResult& r : results) {
+        nlohmann::json row;
+        row["model"] = r.model;
+        row["method"] = r.method;
+        row["characters"] = r.count;
+        row["vertices"] = r.vertices;
+        row["triangles"] = r.triangles;
+        row["status"] = r.ok ? "ok" : "skipped";
+        if (!r.ok) row["error"] = r.error;
+        row["median_frame_ms"] = r.frame.medianFrameMs;
+        row["p95_frame_ms"] = r.frame.p95FrameMs;
+        row["fps"] = r.frame.fps;
+        row["ratio_to_static"] = ratioToStatic(results, r);
+        row["gpu_ms"] = r.passes.medianGpuMs;
+        row["gpu_total_ms"] = r.passes.medianGpuTotalMs;
+        row["pass_clock"] = r.passes.passClock;
+        row["skin_vertices_per_s"] = skinVerticesPerSecond(r);
+        row["cpu_animate_ms"] = r.frame.medianAnimateMs;
+        row["cpu_record_ms"] = r.frame.medianRecordMs;
+        for (const skin::MemoryItem& item : r.frame.memory) row["memory_bytes"][item.what] = item.bytes;
+        json["results"].push_back(row);
+    }
+    std::ofstream file(path);
+    if (!file) throw gpu::Error("cannot write " + path);
+    file << json.dump(2) << '\n';
+    if (!file) throw gpu::Error("cannot write " + path);
+}
+
+}  // namespace app

@@ -1,0 +1,202 @@
+// crowd-bench: the paper's Table 1 (fps for 1..4,096 characters, soldier and horse, per skinning
+// method) plus per-pass GPU times, the cost of each method relative to the static ceiling, CPU
+// times and memory, as a table, CSV and JSON.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/bench_table.h"
+#include "app/benchmark_run.h"
+#include "app/crowd_app.h"
+#include "app/options.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+#include "render/png_writer.h"
+
+#ifndef CROWD_COMMIT
+#define CROWD_COMMIT "unknown"
+#endif
+
+namespace {
+
+const char* kUsage = R"(crowd-bench: measures every skinning method on crowds of growing size (the paper's Table 1).
+
+usage: crowd-bench [options]
+  --models LIST        comma-separated models (default soldier,horse)
+  --methods LIST       comma-separated methods (default vs,vs-instanced,two-pass,two-pass-direct,compute,static)
+  --counts LIST        comma-separated crowd sizes (default 1,16,64,256,1024,2048,4096)
+  --frames N           measured frames per configuration (default 60)
+  --warmup N           frames rendered before measuring (default 10)
+  --size WxH           image size (default 1280x720)
+  --pass-clock CLOCK   auto, timestamps or fence (default auto: fence on lavapipe, whose timestamps
+                       do not bracket compute work, timestamps elsewhere)
+  --quick              1 and 16 characters, 5 frames, 2 warm-up, 320x180: under a minute on lavapipe
+  --csv FILE           every figure as CSV
+  --json FILE          every figure as JSON
+  --device INDEX|NAME  Vulkan device (see crowd-render --list-devices)
+  --seed N             crowd layout seed (default 1)
+  --validation         enable the Khronos validation layer
+  --help               print this help
+Frame times are wall clock between frame starts with two frames in flight; per-pass GPU times come
+from the clock named in each row.
+)";
+
+struct BenchOptions {
+    std::vector<std::string> models{"soldier", "horse"};
+    std::vector<std::string> methods;
+    std::vector<std::uint32_t> counts{1, 16, 64, 256, 1024, 2048, 4096};
+    std::uint32_t frames = 60, warmup = 10, seed = 1;
+    VkExtent2D size{1280, 720};
+    std::string passClock = "auto", csv, json, device;
+    bool validation = false, help = false;
+};
+
+std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    for (std::string item; std::getline(stream, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    if (items.empty()) throw gpu::Error(flag + ": empty list");
+    return items;
+}
+
+BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
+    BenchOptions o;
+    for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& flag = args[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
+            return args[++i];
+        };
+        if (flag == "--help" || flag == "-h") o.help = true;
+        else if (flag == "--validation") o.validation = true;
+        else if (flag == "--quick") o.counts = {1, 16}, o.frames = 5, o.warmup = 2, o.size = {320, 180};
+        else if (flag == "--models") o.models = splitList(flag, next());
+        else if (flag == "--methods") o.methods = splitList(flag, next());
+        else if (flag == "--counts") {
+            o.counts.clear();
+            for (const std::string& c : splitList(flag, next())) o.counts.push_back(app::parseCount(flag, c, 1, app::kMaxCharacters));
+        } else if (flag == "--frames") o.frames = app::parseCount(flag, next(), 1, 100000);
+        else if (flag == "--warmup") o.warmup = app::parseCount(flag, next(), 0, 100000);
+        else if (flag == "--size") o.size = app::parseSize(flag, next());
+        else if (flag == "--pass-clock") o.passClock = next();
+        else if (flag == "--csv") o.csv = next();
+        else if (flag == "--json") o.json = next();
+        else if (flag == "--device") o.device = next();
+        else if (flag == "--seed") o.seed = app::parseCount(flag, next(), 0, UINT32_MAX);
+        else throw gpu::Error("unknown option '" + flag + "' (see --help)");
+    }
+    skin::Method method;
+    for (const std::string& m : o.methods)
+        if (!skin::parseMethod(m, method)) throw gpu::Error("--methods: unknown method '" + m + "'");
+    if (o.passClock != "auto" && o.passClock != "timestamps" && o.passClock != "fence")
+        throw gpu::Error("--pass-clock: '" + o.passClock + "' is not auto, timestamps or fence");
+    return o;
+}
+
+std::string utcDate() {
+    const std::time_t now = std::time(nullptr);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    return text;
+}
+
+app::BenchResult measure(const gpu::VulkanContext& context, const model::SkinnedModel& model,
+                         const BenchOptions& options, skin::Method method, std::uint32_t count, bool fencePasses) {
+    app::BenchResult result;
+    result.model = model.name;
+    result.method = skin::methodName(method);
+    result.count = count;
+    result.vertices = static_cast<std::uint32_t>(model.vertices.size());
+    result.triangles = static_cast<std::uint32_t>(model.triangleCount());
+    app::ScenarioOptions scenario;
+    scenario.count = count;
+    scenario.method = method;
+    scenario.warmup = options.warmup;
+    scenario.frames = options.frames;
+    scenario.size = options.size;
+    scenario.seed = options.seed;
+    try {
+        result.frame = app::runScenario(context, model, scenario);
+        result.passes = result.frame;
+        if (fencePasses) {
+            // A second, serialized run whose passes are timed by fences; fewer frames suffice.
+            scenario.passClock = gpu::PassClock::FenceWallClock;
+            scenario.warmup = std::min(options.warmup, 2u);
+            scenario.frames = std::max(3u, options.frames / 4);
+            result.passes = app::runScenario(context, model, scenario);
+        }
+        result.ok = true;
+    } catch (const gpu::Error& error) {
+        result.error = error.what();
+    }
+    return result;
+}
+
+int run(const BenchOptions& options, const std::string& command) {
+    if (!options.csv.empty()) render::checkWritable(options.csv);
+    if (!options.json.empty()) render::checkWritable(options.json);
+    gpu::VulkanContext context({options.validation, options.device, {}, false});
+    const bool fencePasses = options.passClock == "fence" ||
+                             (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
+    std::fprintf(stderr, "crowd-bench on %s (%s); per-pass clock: %s\n", context.description.name.c_str(),
+                 context.description.driver.c_str(), fencePasses ? "fence wall clock" : "timestamp queries");
+
+    std::vector<app::BenchResult> results;
+    const std::size_t total = options.models.size() * options.methods.size() * options.counts.size();
+    for (const std::string& modelName : options.models) {
+        const model::SkinnedModel model = app::loadModel(modelName, options.seed);
+        for (std::uint32_t count : options.counts)
+            for (const std::string& methodName : options.methods) {
+                skin::Method method;
+                skin::parseMethod(methodName, method);
+                std::fprintf(stderr, "[%zu/%zu] %s %s x %u\n", results.size() + 1, total, model.name.c_str(),
+                             methodName.c_str(), count);
+                results.push_back(measure(context, model, options, method, count, fencePasses));
+            }
+    }
+
+    std::printf("crowd-bench: %s, driver %s, commit %s, %s\n", context.description.name.c_str(),
+                context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
+    std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
+                options.frames, options.warmup, options.size.width, options.size.height);
+    app::printTable1(results, options.models, options.methods, options.counts);
+    app::printPassTable(results);
+
+    app::BenchMeta meta{context.description.name, context.description.driver, CROWD_COMMIT, utcDate(), command,
+                        options.frames, options.warmup, options.size.width, options.size.height};
+    if (!options.csv.empty()) app::writeCsv(options.csv, meta, results);
+    if (!options.json.empty()) app::writeBenchJson(options.json, meta, results);
+    if (context.validationMessages() > 0) {
+        std::fprintf(stderr, "crowd-bench: %llu validation message(s)\n",
+                     static_cast<unsigned long long>(context.validationMessages()));
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const std::vector<std::string> args(argv + 1, argv + argc);
+        const BenchOptions options = parseBenchOptions(args);
+        if (options.help) return std::printf("%s", kUsage), 0;
+        std::string command = "crowd-bench";
+        for (const std::string& a : args) command += " " + a;
+        return run(options, command);
+    } catch (const gpu::Error& error) {
+        std::fprintf(stderr, "crowd-bench: %s\n", error.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "crowd-bench: out of host memory\n");
+        return 1;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "crowd-bench: unexpected error: %s\n", error.what());
+        return 2;
+    }
+}
