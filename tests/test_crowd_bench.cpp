@@ -1,0 +1,91 @@
+// crowd-bench --quick as CI runs it: every method and model measured, every figure present in the CSV
+// and JSON, validation silent. Nothing here asserts a speed.
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "skin/skinning_method.h"
+#include "support/run_program.h"
+
+namespace {
+
+const std::string kBench = CROWD_BENCH_BINARY;
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> fields;
+    std::string field;
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) fields.push_back(field), field.clear();
+        else field += c;
+    }
+    fields.push_back(field);
+    return fields;
+}
+
+std::string tempFile(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("crowd-bench-" + std::to_string(::getpid()) + "-" + name)).string();
+}
+
+}  // namespace
+
+TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
+    const std::string csv = tempFile("quick.csv"), json = tempFile("quick.json");
+    const test::ProgramResult r = test::runProgram(kBench, "--quick --validation --csv " + csv + " --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("Table 1 (soldier)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Table 1 (horse)"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("[24/24]"), std::string::npos) << "progress on stderr:\n" << r.err;
+
+    std::ifstream csvFile(csv);
+    std::string line;
+    std::getline(csvFile, line);
+    const std::vector<std::string> header = splitCsvLine(line);
+    std::set<std::string> seen;
+    while (std::getline(csvFile, line)) {
+        const std::vector<std::string> row = splitCsvLine(line);
+        ASSERT_EQ(row.size(), header.size()) << line;
+        std::map<std::string, std::string> field;
+        for (std::size_t i = 0; i < row.size(); ++i) field[header[i]] = row[i];
+        EXPECT_EQ(field["status"], "ok") << line;
+        for (const char* number : {"median_frame_ms", "p95_frame_ms", "fps", "gpu_draw_ms", "gpu_total_ms",
+                                   "cpu_animate_ms", "memory_bytes", "ratio_to_static"})
+            EXPECT_GT(std::stod(field[number]), 0.0) << number << " in " << line;
+        EXPECT_FALSE(field["pass_clock"].empty());
+        EXPECT_FALSE(field["device"].empty());
+        EXPECT_FALSE(field["commit"].empty());
+        const bool skins = field["method"] != "vs" && field["method"] != "vs-instanced" && field["method"] != "static";
+        if (skins) EXPECT_GT(std::stod(field["gpu_skin_ms"]), 0.0) << line;
+        if (field["method"] == "two-pass") EXPECT_GT(std::stod(field["gpu_copy_ms"]), 0.0) << line;
+        seen.insert(field["model"] + "/" + field["method"] + "/" + field["characters"]);
+    }
+    for (const char* model : {"soldier", "horse"})
+        for (skin::Method method : skin::allMethods())
+            for (const char* count : {"1", "16"})
+                EXPECT_TRUE(seen.count(std::string(model) + "/" + skin::methodName(method) + "/" + count))
+                    << model << " " << skin::methodName(method) << " " << count;
+
+    std::ifstream jsonFile(json);
+    const nlohmann::json j = nlohmann::json::parse(jsonFile);
+    EXPECT_FALSE(j["device"].get<std::string>().empty());
+    EXPECT_FALSE(j["driver"].get<std::string>().empty());
+    EXPECT_FALSE(j["date"].get<std::string>().empty());
+    EXPECT_EQ(j["results"].size(), 24u);
+    std::filesystem::remove(csv);
+    std::filesystem::remove(json);
+}
+
+TEST(CrowdBench, BadValuesGiveOneLineErrors) {
+    for (const char* arguments : {"--counts 0", "--counts 1,x", "--methods fast", "--pass-clock sundial", "--frames",
+                                  "--csv /nonexistent-dir/x.csv"}) {
+        const test::ProgramResult r = test::runProgram(kBench, arguments);
+        EXPECT_EQ(r.exitCode, 1) << arguments;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << arguments << ":\n" << r.err;
+    }
+}
