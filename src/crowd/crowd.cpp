@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <thread>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "anim/local_to_model.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
+#include "crowd/worker_pool.h"
 
 namespace crowd {
 
@@ -55,7 +55,7 @@ Crowd::Crowd(const model::SkinnedModel& model, std::vector<Character> characters
 void Crowd::animateCharacter(std::uint32_t index, float time, std::span<gpu::BoneRows> out) const {
     const anim::Skeleton& skeleton = model_.skeleton;
     const std::size_t joints = skeleton.jointCount();
-    // Per-thread scratch, reused across calls: once warm, animation allocates nothing.
+    // Per-thread scratch, reused by the pool's long-lived threads: once warm, animation allocates nothing.
     thread_local std::vector<anim::Transform> locals;
     thread_local std::vector<glm::mat4> modelSpace;
     locals.resize(joints);
@@ -71,19 +71,11 @@ void Crowd::animateCharacter(std::uint32_t index, float time, std::span<gpu::Bon
 }
 
 void Crowd::animate(float time, std::span<gpu::BoneRows> out, std::uint32_t boneStride) const {
-    const std::uint32_t count = size();
-    auto work = [&](std::uint32_t begin, std::uint32_t end) {
+    // Chunks of 32 characters (tens of microseconds each) keep the handoff cost small and the cores even.
+    WorkerPool::shared().parallelFor(size(), 32, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i)
             animateCharacter(i, time, out.subspan(static_cast<std::size_t>(i) * boneStride, boneStride));
-    };
-    // Threads pay off only once there is enough work to amortize starting them.
-    const std::uint32_t threads = std::min<std::uint32_t>(std::max(1u, std::thread::hardware_concurrency()),
-                                                          count / 512 + 1);
-    if (threads <= 1) return work(0, count);
-    std::vector<std::jthread> pool;
-    const std::uint32_t chunk = (count + threads - 1) / threads;
-    for (std::uint32_t t = 0; t < threads; ++t)
-        pool.emplace_back(work, std::min(count, t * chunk), std::min(count, (t + 1) * chunk));
+    });
 }
 
 glm::vec3 Crowd::center() const {

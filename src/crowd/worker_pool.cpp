@@ -1,0 +1,68 @@
+#include "crowd/worker_pool.h"
+
+#include <algorithm>
+
+namespace crowd {
+
+WorkerPool::WorkerPool(unsigned threads) {
+    for (unsigned i = 1; i < std::max(1u, threads); ++i) threads_.emplace_back([this] { workerLoop(); });
+}
+
+WorkerPool::~WorkerPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_) t.join();
+}
+
+WorkerPool& WorkerPool::shared() {
+    static WorkerPool pool;
+    return pool;
+}
+
+void WorkerPool::runChunks() {
+    for (;;) {
+        const std::uint32_t begin = next_.fetch_add(chunk_);
+        if (begin >= count_) return;
+        (*work_)(begin, std::min(count_, begin + chunk_));
+    }
+}
+
+void WorkerPool::workerLoop() {
+    std::uint64_t seen = 0;
+    for (;;) {
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            if (stopping_) return;
+            seen = generation_;
+        }
+        runChunks();
+        {
+            std::lock_guard lock(mutex_);
+            if (--busy_ == 0) finished_.notify_one();
+        }
+    }
+}
+
+void WorkerPool::parallelFor(std::uint32_t count, std::uint32_t chunk,
+                             const std::function<void(std::uint32_t, std::uint32_t)>& work) {
+    if (threads_.empty() || count <= chunk) return work(0, count);
+    {
+        std::lock_guard lock(mutex_);
+        work_ = &work;
+        count_ = count;
+        chunk_ = std::max(1u, chunk);
+        next_ = 0;
+        busy_ = static_cast<unsigned>(threads_.size());
+        ++generation_;
+    }
+    wake_.notify_all();
+    runChunks();
+    std::unique_lock lock(mutex_);
+    finished_.wait(lock, [&] { return busy_ == 0; });
+}
+
+}  // namespace crowd

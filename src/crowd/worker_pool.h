@@ -1,0 +1,46 @@
+#pragma once
+// A fixed set of worker threads that split a loop over characters: started once, so a frame pays
+// no thread creation, and a small crowd can still use every core.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace crowd {
+
+class WorkerPool {
+public:
+    explicit WorkerPool(unsigned threads = std::thread::hardware_concurrency());
+    ~WorkerPool();
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    // Calls work(begin, end) over [0, count) in chunks of `chunk`, on the workers and the calling
+    // thread, and returns once every chunk is done. Not reentrant.
+    void parallelFor(std::uint32_t count, std::uint32_t chunk,
+                     const std::function<void(std::uint32_t, std::uint32_t)>& work);
+
+    // The pool shared by the process, with one worker per core beyond the caller's.
+    static WorkerPool& shared();
+
+private:
+    void workerLoop();
+    void runChunks();
+
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::condition_variable finished_;
+    const std::function<void(std::uint32_t, std::uint32_t)>* work_ = nullptr;
+    std::uint32_t count_ = 0;
+    std::uint32_t chunk_ = 1;
+    std::atomic<std::uint32_t> next_{0};
+    std::uint64_t generation_ = 0;
+    unsigned busy_ = 0;
+    bool stopping_ = false;
+    std::vector<std::thread> threads_;
+};
+
+}  // namespace crowd

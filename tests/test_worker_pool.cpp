@@ -1,0 +1,29 @@
+// The worker pool visits every index exactly once, for any count and chunk size, many times over.
+#include <atomic>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "crowd/worker_pool.h"
+
+TEST(WorkerPool, VisitsEveryIndexExactlyOnce) {
+    crowd::WorkerPool pool(4);
+    for (std::uint32_t count : {0u, 1u, 7u, 32u, 33u, 1000u, 4097u})
+        for (std::uint32_t chunk : {1u, 5u, 32u, 5000u}) {
+            std::vector<std::atomic<int>> visits(count);
+            pool.parallelFor(count, chunk, [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t i = begin; i < end; ++i) visits[i]++;
+            });
+            for (std::uint32_t i = 0; i < count; ++i) ASSERT_EQ(visits[i].load(), 1) << count << "/" << chunk << " @" << i;
+        }
+}
+
+TEST(WorkerPool, RunsRepeatedlyWithoutLosingWork) {
+    crowd::WorkerPool pool(3);
+    std::atomic<std::uint64_t> sum{0};
+    for (int round = 0; round < 500; ++round)
+        pool.parallelFor(100, 7, [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t i = begin; i < end; ++i) sum += i;
+        });
+    EXPECT_EQ(sum.load(), 500u * 4950u);
+}
