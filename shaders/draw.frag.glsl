@@ -10,8 +10,12 @@ layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec3 inAlbedo;
 layout(location = 2) in vec3 inWorld;
+layout(location = 3) in vec2 inUv;
+layout(location = 4) flat in uint inTextured;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    outColor = vec4(shade(scene, inNormal, inAlbedo, distance(inWorld, cameraPosition.xyz)), 1.0);
+    vec3 albedo = inAlbedo;
+    if (inTextured != 0u) albedo *= texture(baseColorTexture, inUv).rgb;
+    outColor = vec4(shade(scene, inNormal, albedo, distance(inWorld, cameraPosition.xyz)), 1.0);
 }

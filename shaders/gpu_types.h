@@ -52,6 +52,7 @@ struct SceneUniforms {
     vec4 lightDirection;  // xyz: unit vector towards the light, w: ambient term
     vec4 skyColor;
     vec4 groundColor;     // xyz colour, w: checker tile size in metres
+    uvec4 materialFlags;  // x: bit m set when material m is multiplied by the base-colour texture
     vec4 palette[MAX_MATERIALS];
 };
 

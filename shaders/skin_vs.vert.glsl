@@ -19,6 +19,8 @@ layout(location = 3) in vec4 inWeights;
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec3 outAlbedo;
 layout(location = 2) out vec3 outWorld;
+layout(location = 3) out vec2 outUv;
+layout(location = 4) flat out uint outTextured;
 
 void main() {
     SkinVertex v = SkinVertex(inPosition, inNormal, inJoints, inWeights);
@@ -26,5 +28,7 @@ void main() {
     gl_Position = scene.viewProjection * vec4(s.position, 1.0);
     outNormal = s.normal;
     outAlbedo = characterColor(scene, uint(inNormal.w), uint(gl_InstanceIndex));
+    outUv = textureCoordinates[uint(gl_VertexIndex)];
+    outTextured = isTextured(scene, uint(inNormal.w));
     outWorld = s.position;
 }

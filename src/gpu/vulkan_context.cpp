@@ -215,15 +215,21 @@ void VulkanContext::createDevice(const ContextOptions& options) {
     if (!found) throw Error("device " + description.name + " has no graphics+compute queue");
     if (families[queueFamily].timestampValidBits > 0) timestampPeriodNs_ = properties.limits.timestampPeriod;
 
-    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan11Features supported11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &supported11};
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported13};
     vkGetPhysicalDeviceFeatures2(physicalDevice, &supported);
     if (!supported13.dynamicRendering || !supported13.synchronization2)
         throw Error("device " + description.name + " lacks dynamicRendering or synchronization2");
+    // Pass 2 finds a vertex's texture coordinates from gl_VertexIndex - gl_BaseVertex.
+    if (!supported11.shaderDrawParameters)
+        throw Error("device " + description.name + " lacks shaderDrawParameters");
     multiDrawIndirect = supported.features.multiDrawIndirect;
     fragmentStores = supported.features.fragmentStoresAndAtomics;
 
-    VkPhysicalDeviceVulkan13Features enabled13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan11Features enabled11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    enabled11.shaderDrawParameters = VK_TRUE;
+    VkPhysicalDeviceVulkan13Features enabled13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &enabled11};
     enabled13.dynamicRendering = VK_TRUE;
     enabled13.synchronization2 = VK_TRUE;
     VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &enabled13};

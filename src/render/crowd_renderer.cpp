@@ -23,7 +23,8 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       buffers_(context, crowd.model(), crowd.size(), options.framesInFlight),
       target_(std::make_unique<RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
-      scene_(context, options.framesInFlight),
+      material_(context, crowd.model()),
+      scene_(context, options.framesInFlight, material_),
       timer_(context, options.framesInFlight, options.passClock),
       method_(skin::createSkinningMethod(options.method,
                                          {context, buffers_, scene_.setLayout(), options.maxTargetDimension})),
@@ -68,7 +69,7 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     // 2-5. Upload, skin, draw, timestamps: recorded into one command buffer and submitted.
     const float aspect = static_cast<float>(target_->extent().width) / static_cast<float>(target_->extent().height);
     scene_.update(slot, makeSceneUniforms(camera.viewProjection(aspect), crowd_.model().materialColors,
-                                          0.5f / (camera.farPlane + 1.0f)));
+                                          crowd_.model().texturedMaterials, 0.5f / (camera.farPlane + 1.0f)));
     VK_CHECK(vkResetCommandBuffer(frame.cmd, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -163,7 +164,8 @@ Rgba8Image CrowdRenderer::readback() {
 std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
     std::vector<skin::MemoryItem> items = {{"bind-pose vertices and indices", buffers_.bindVertices().size + buffers_.indices().size},
                                            {"bone matrices", buffers_.bones().size},
-                                           {"render target", target_->bytes()}};
+                                           {"render target", target_->bytes()},
+                                           {"base-colour texture and coordinates", material_.bytes()}};
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }

@@ -13,6 +13,7 @@
 #include "gpu/gpu_timer.h"
 #include "render/camera.h"
 #include "render/crowd_buffers.h"
+#include "render/material_texture.h"
 #include "render/render_target.h"
 #include "render/scene_pass.h"
 #include "skin/skinning_method.h"
@@ -87,6 +88,7 @@ private:
     CrowdBuffers buffers_;
     std::unique_ptr<RenderTarget> target_;
     std::uint32_t maxTargetDimension_;
+    MaterialTexture material_;
     ScenePass scene_;
     gpu::GpuTimer timer_;
     std::unique_ptr<skin::SkinningMethod> method_;

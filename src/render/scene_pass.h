@@ -14,6 +14,8 @@ namespace gpu { class VulkanContext; }
 
 namespace render {
 
+class MaterialTexture;
+
 // The clear colour behind everything and the colour distant things fade into (linear RGB).
 inline constexpr glm::vec3 kSkyColor{0.55f, 0.7f, 0.9f};
 
@@ -25,7 +27,7 @@ struct ScenePush {
 
 class ScenePass {
 public:
-    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight);
+    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const MaterialTexture& material);
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;
@@ -36,6 +38,8 @@ public:
     void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
 
 private:
+    void writeMaterial(VkDescriptorSet set, const MaterialTexture& material) const;
+
     const gpu::VulkanContext& context_;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
@@ -47,6 +51,6 @@ private:
 
 // Scene uniforms for a camera and a model's palette: sun from the upper left, pale sky, grass.
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     float fogDensity);
+                                     std::uint32_t texturedMaterials, float fogDensity);
 
 }  // namespace render
