@@ -1,19 +1,27 @@
 #include "app/crowd_app.h"
 
 #include <charconv>
+#include <filesystem>
 
+#include "anim/local_to_model.h"
+#include "anim/sample_clip.h"
+#include "anim/skinning_matrices.h"
 #include "gpu/buffer.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "model/gltf_loader.h"
 #include "model/procedural_models.h"
 #include "skin/fragment_skinning.h"
 
 namespace app {
 
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed) {
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
     if (name == "soldier") return model::makeSoldier(seed);
     if (name == "horse") return model::makeHorse(seed);
-    throw gpu::Error("--model: unknown model '" + name + "' (soldier or horse)");
+    std::error_code error;
+    if (model::hasGltfExtension(name) || std::filesystem::is_regular_file(name, error))
+        return model::loadGltf(name, notes);
+    throw gpu::Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
 }
 
 namespace {
@@ -31,6 +39,22 @@ int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
 }
 
 }  // namespace
+
+std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& clip) {
+    const int index = resolveClip(model, clip);
+    return index >= 0 ? static_cast<std::uint32_t>(index) : crowd::defaultClip(model);
+}
+
+std::vector<skin::CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, std::uint32_t clip, float time) {
+    const anim::Skeleton& skeleton = model.skeleton;
+    std::vector<anim::Transform> locals(skeleton.restPose);
+    if (clip < model.clips.size()) anim::sampleClip(model.clips[clip], time, skeleton.restPose, locals);
+    std::vector<glm::mat4> modelSpace(skeleton.jointCount());
+    anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, modelSpace);
+    std::vector<gpu::BoneRows> bones(skeleton.jointCount());
+    anim::skinningMatrices(modelSpace, skeleton.inverseBind, glm::mat4(1.0f), bones);
+    return skin::skinOnCpu(model, bones);
+}
 
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const SceneOptions& scene) {
     crowd::LayoutOptions layout;

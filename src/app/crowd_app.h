@@ -8,13 +8,26 @@
 #include "crowd/crowd.h"
 #include "model/skinned_model.h"
 #include "render/crowd_renderer.h"
+#include "skin/cpu_skinning.h"
 
 namespace gpu { class VulkanContext; }
 
 namespace app {
 
-// "soldier" or "horse". Throws gpu::Error for anything else.
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed);
+// "soldier", "horse", or a glTF 2.0 file: a name ending in .gltf or .glb, or any existing file.
+// Throws gpu::Error for anything else and for a file that cannot be loaded. Notes on what a glTF
+// file had that the character leaves out are appended to `notes` when given.
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr);
+
+// The clip `clip` names (by name, or by index), or the crowd's default clip when `clip` is empty.
+// Throws gpu::Error listing the model's clips.
+std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& clip);
+
+// One character's skinned vertices at `time` seconds into `clip`, standing at the origin (character
+// transform = identity): the model's own space, which for glTF is its scene's world space. A clip
+// index past the last gives the rest pose. CPU jobs only: sample, local to model (with the
+// skeleton's root transform), skinning matrices, skin.
+std::vector<skin::CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, std::uint32_t clip, float time);
 
 // The crowd's characters for the scene options (grid layout, clip by name or index, or random).
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const SceneOptions& scene);

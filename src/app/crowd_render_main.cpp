@@ -1,5 +1,8 @@
 // crowd-render: renders a skinned crowd headless for N frames, writes a PNG of the last frame and
-// prints (and optionally writes as JSON) the timings.
+// prints (and optionally writes as JSON) the timings. Without a GPU it also lists a model's clips
+// (--list-clips) and writes one character's pose as OBJ (--export-pose).
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -10,10 +13,60 @@
 #include "app/report.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "model/obj_export.h"
 #include "render/crowd_renderer.h"
 #include "render/png_writer.h"
 
 namespace {
+
+// crowd-render's own flags, beyond those every program shares.
+struct PoseFlags {
+    bool listClips = false;
+    std::string exportPose;  // OBJ path
+    std::string time;        // seconds into the clip, as typed
+};
+
+float parseSeconds(const std::string& text) {
+    float seconds = 0.0f;
+    const auto [ptr, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+    if (text.empty() || error != std::errc() || ptr != text.data() + text.size() || !std::isfinite(seconds))
+        throw gpu::Error("--time: '" + text + "' is not a number of seconds");
+    return seconds;
+}
+
+model::SkinnedModel loadAndNote(const app::RenderOptions& options) {
+    std::vector<std::string> notes;
+    model::SkinnedModel model = app::loadModel(options.scene.model, options.scene.seed, &notes);
+    for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
+    return model;
+}
+
+int listClips(const app::RenderOptions& options) {
+    const model::SkinnedModel model = loadAndNote(options);
+    std::printf("%s: %zu joints, %zu vertices, %zu triangles, height %.4g\n", model.name.c_str(),
+                model.skeleton.jointCount(), model.vertices.size(), model.triangleCount(), model.height());
+    std::printf("%zu clip(s):\n", model.clips.size());
+    for (std::size_t i = 0; i < model.clips.size(); ++i)
+        std::printf("  %zu: %s (%.4f s)\n", i, model.clips[i].name.c_str(), model.clips[i].duration);
+    return 0;
+}
+
+int exportPose(const app::RenderOptions& options, const PoseFlags& flags) {
+    const float time = flags.time.empty() ? 0.0f : parseSeconds(flags.time);
+    render::checkWritable(flags.exportPose);
+    const model::SkinnedModel character = loadAndNote(options);
+    const std::uint32_t clip = app::clipIndex(character, options.scene.clip);
+    const std::vector<skin::CpuSkinnedVertex> pose = app::poseOnCpu(character, clip, time);
+    std::vector<glm::dvec3> positions, normals;
+    positions.reserve(pose.size());
+    normals.reserve(pose.size());
+    for (const skin::CpuSkinnedVertex& v : pose) positions.push_back(v.position), normals.push_back(v.normal);
+    model::writeObj(flags.exportPose, character.name, positions, normals, character.indices);
+    std::printf("wrote %s: %s, clip %s at %.4f s, %zu vertices, %zu triangles\n", flags.exportPose.c_str(),
+                character.name.c_str(), character.clips.empty() ? "(none)" : character.clips[clip].name.c_str(), time,
+                positions.size(), character.triangleCount());
+    return 0;
+}
 
 void listDevices() {
     for (const gpu::DeviceDescription& d : gpu::listDevices())
@@ -26,7 +79,7 @@ int run(const app::RenderOptions& options) {
     render::checkWritable(options.out);
     if (!options.json.empty()) render::checkWritable(options.json);
 
-    const model::SkinnedModel model = app::loadModel(options.scene.model, options.scene.seed);
+    const model::SkinnedModel model = loadAndNote(options);
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     app::checkCrowdFits(context, model, options.scene.count, options.method, options.size);
     const crowd::Crowd crowd(model, app::buildCharacters(model, options.scene));
@@ -60,9 +113,21 @@ int run(const app::RenderOptions& options) {
 
 int main(int argc, char** argv) {
     try {
-        const app::RenderOptions options = app::parseRenderOptions(std::vector<std::string>(argv + 1, argv + argc));
+        PoseFlags pose;
+        const app::RenderOptions options = app::parseRenderOptions(
+            std::vector<std::string>(argv + 1, argv + argc),
+            [&](const std::string& flag, const std::function<std::string()>& value) {
+                if (flag == "--list-clips") pose.listClips = true;
+                else if (flag == "--export-pose") pose.exportPose = value();
+                else if (flag == "--time") pose.time = value();
+                else return false;
+                return true;
+            });
         if (options.help) return std::printf("%s", app::renderUsage()), 0;
         if (options.listDevices) return listDevices(), 0;
+        if (!pose.time.empty() && pose.exportPose.empty()) throw gpu::Error("--time needs --export-pose");
+        if (pose.listClips) return listClips(options);
+        if (!pose.exportPose.empty()) return exportPose(options, pose);
         return run(options);
     } catch (const gpu::Error& error) {
         std::fprintf(stderr, "crowd-render: %s\n", error.what());

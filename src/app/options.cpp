@@ -20,7 +20,8 @@ const char* renderUsage() {
     return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
 
 usage: crowd-render [options]
-  --model soldier|horse   built-in character (default soldier)
+  --model soldier|horse|FILE
+                          built-in character (default soldier) or a skinned glTF 2.0 file (.gltf/.glb)
   --count N               characters, 1..16777216 (default 1024)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
   --method NAME           skinning method: two-pass (default, the paper's), vs (the paper's baseline),
@@ -33,6 +34,9 @@ usage: crowd-render [options]
   --seed N                seed of the crowd's layout, phases and speeds (default 1)
   --validation            enable the Khronos validation layer (with synchronization checks)
   --list-devices          print the Vulkan devices and exit
+  --list-clips            print the model's clips, joints, vertices and triangles and exit (no GPU)
+  --export-pose FILE.obj  write one character's skinned mesh at --clip and --time as OBJ and exit (no GPU)
+  --time SECONDS          time into the clip for --export-pose (default 0; clips loop)
   --help                  print this help and exit
 )";
 }

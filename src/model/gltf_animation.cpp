@@ -1,0 +1,135 @@
+// glTF animations as clips: translation, rotation and scale channels on skeleton nodes, with their
+// keys checked (increasing times, enough values, unit quaternions) so sampling never reads past a
+// channel or produces NaN.
+#include <algorithm>
+#include <cmath>
+
+#include "model/gltf_internal.h"
+
+namespace model::gltf {
+namespace {
+
+// Most key values (times and values) of all clips together: 16 Mi keys is hours of a 100-joint rig
+// at 30 Hz. Channels may share accessors, so without a budget a small file could name one big
+// accessor from a million channels.
+constexpr std::size_t kMaxKeyValues = std::size_t{1} << 24;
+
+bool channelPath(const std::string& path, anim::ChannelPath& out) {
+    if (path == "translation")
+        out = anim::ChannelPath::Translation;
+    else if (path == "rotation")
+        out = anim::ChannelPath::Rotation;
+    else if (path == "scale")
+        out = anim::ChannelPath::Scale;
+    else
+        return false;
+    return true;
+}
+
+anim::Interpolation interpolation(const std::string& name, const std::string& what) {
+    if (name.empty() || name == "LINEAR") return anim::Interpolation::Linear;
+    if (name == "STEP") return anim::Interpolation::Step;
+    if (name == "CUBICSPLINE") return anim::Interpolation::CubicSpline;
+    fail(what + ": unknown interpolation '" + name + "' (LINEAR, STEP or CUBICSPLINE)");
+}
+
+anim::Channel readChannel(const tinygltf::Model& model, const tinygltf::Animation& animation,
+                          const tinygltf::AnimationChannel& source, anim::ChannelPath path, const std::string& what) {
+    if (source.sampler < 0 || static_cast<std::size_t>(source.sampler) >= animation.samplers.size())
+        fail(what + ": sampler " + std::to_string(source.sampler) + " does not exist (the animation has " +
+             std::to_string(animation.samplers.size()) + ")");
+    const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<std::size_t>(source.sampler)];
+    anim::Channel channel;
+    channel.path = path;
+    channel.interpolation = interpolation(sampler.interpolation, what);
+
+    const FloatData times =
+        readFloats(model, sampler.input, {what + " input", {TINYGLTF_TYPE_SCALAR}, {TINYGLTF_COMPONENT_TYPE_FLOAT}});
+    if (times.count == 0) fail(what + ": no keys");
+    channel.times = times.values;
+    for (std::size_t k = 1; k < channel.times.size(); ++k)
+        if (channel.times[k] < channel.times[k - 1])
+            fail(what + ": key times decrease at key " + std::to_string(k) + " (they must increase)");
+
+    const bool rotation = path == anim::ChannelPath::Rotation;
+    const AccessorRule valueRule =
+        rotation ? AccessorRule{what + " output",
+                                {TINYGLTF_TYPE_VEC4},
+                                {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}}
+                 : AccessorRule{what + " output", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT}};
+    const FloatData values = readFloats(model, sampler.output, valueRule);
+    const bool cubic = channel.interpolation == anim::Interpolation::CubicSpline;
+    const std::size_t needed = times.count * (cubic ? 3 : 1);
+    if (values.count < needed)
+        fail(what + ": " + std::to_string(values.count) + " values for " + std::to_string(times.count) + " keys (" +
+             (cubic ? "CUBICSPLINE needs 3 per key" : "needs 1 per key") + ")");
+    channel.values.resize(needed);
+    for (std::size_t i = 0; i < needed; ++i) {
+        const float* v = values.element(i);
+        channel.values[i] = rotation ? glm::vec4(v[0], v[1], v[2], v[3]) : glm::vec4(v[0], v[1], v[2], 0.0f);
+        // Key values (not spline tangents) of rotations are normalized when sampled: a zero one has no direction.
+        const bool keyValue = !cubic || i % 3 == 1;
+        if (rotation && keyValue && !(glm::length(channel.values[i]) > 1e-6f))
+            fail(what + ": rotation key " + std::to_string(cubic ? i / 3 : i) + " is not a unit quaternion");
+    }
+    return channel;
+}
+
+}  // namespace
+
+std::vector<bool> animatedNodes(const tinygltf::Model& model) {
+    std::vector<bool> animated(model.nodes.size(), false);
+    for (const tinygltf::Animation& animation : model.animations) {
+        for (const tinygltf::AnimationChannel& channel : animation.channels) {
+            anim::ChannelPath path;
+            if (channelPath(channel.target_path, path) && channel.target_node >= 0 &&
+                static_cast<std::size_t>(channel.target_node) < model.nodes.size())
+                animated[static_cast<std::size_t>(channel.target_node)] = true;
+        }
+    }
+    return animated;
+}
+
+std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const std::vector<int>& jointOfNode,
+                                  std::vector<std::string>& notes) {
+    std::vector<anim::Clip> clips;
+    std::size_t ignored = 0, morphWeights = 0, keyValues = 0;
+    for (std::size_t a = 0; a < model.animations.size(); ++a) {
+        const tinygltf::Animation& animation = model.animations[a];
+        anim::Clip clip;
+        clip.name = animation.name.empty() ? "clip" + std::to_string(a) : animation.name;
+        for (std::size_t c = 0; c < animation.channels.size(); ++c) {
+            const tinygltf::AnimationChannel& source = animation.channels[c];
+            const std::string what = "animation " + std::to_string(a) + " channel " + std::to_string(c);
+            anim::ChannelPath path;
+            if (!channelPath(source.target_path, path)) {
+                ++morphWeights;
+                continue;
+            }
+            if (source.target_node < 0 || static_cast<std::size_t>(source.target_node) >= model.nodes.size())
+                fail(what + ": target node " + std::to_string(source.target_node) + " does not exist (the file has " +
+                     std::to_string(model.nodes.size()) + " nodes)");
+            const int joint = jointOfNode[static_cast<std::size_t>(source.target_node)];
+            if (joint < 0) {
+                ++ignored;  // a node outside the character's skeleton: another object, or the mesh node
+                continue;
+            }
+            anim::Channel channel = readChannel(model, animation, source, path, what);
+            keyValues += channel.times.size() + channel.values.size();
+            if (keyValues > kMaxKeyValues)
+                fail("the animations have more than " + std::to_string(kMaxKeyValues) + " keys in all");
+            channel.joint = static_cast<std::uint32_t>(joint);
+            clip.duration = std::max(clip.duration, channel.times.back());
+            clip.channels.push_back(std::move(channel));
+        }
+        clips.push_back(std::move(clip));
+    }
+    if (ignored > 0)
+        notes.push_back(std::to_string(ignored) + " animation channel(s) move nodes outside the skeleton; ignored");
+    if (morphWeights > 0) notes.push_back(std::to_string(morphWeights) + " morph-target weight channel(s) ignored");
+    return clips;
+}
+
+}  // namespace model::gltf
