@@ -147,9 +147,11 @@ int run(const BenchOptions& options, const std::string& command) {
                  context.description.driver.c_str(), fencePasses ? "fence wall clock" : "timestamp queries");
 
     std::vector<app::BenchResult> results;
+    std::vector<std::string> modelNames;  // as the models name themselves (a file's model is not its path)
     const std::size_t total = options.models.size() * options.methods.size() * options.counts.size();
     for (const std::string& modelName : options.models) {
         const model::SkinnedModel model = app::loadModel(modelName, options.seed);
+        modelNames.push_back(model.name);
         for (std::uint32_t count : options.counts)
             for (const std::string& methodName : options.methods) {
                 skin::Method method;
@@ -164,7 +166,7 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    app::printTable1(results, options.models, options.methods, options.counts);
+    app::printTable1(results, modelNames, options.methods, options.counts);
     app::printPassTable(results);
 
     app::BenchMeta meta{context.description.name, context.description.driver, CROWD_COMMIT, utcDate(), command,
