@@ -10,10 +10,10 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev libstb-dev
   libmeshoptimizer-dev libimgui-dev libgtest-dev
 )
-# Extra packages only the test suite needs (virtual X server for the viewer test, broken glTF corpus,
-# plotting for benchmark figures).
+# Extra packages only the test suite needs (virtual X server for the viewer test and xdotool to resize
+# its window, broken glTF corpus, plotting for benchmark figures).
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(xvfb xauth assimp-testmodels python3-matplotlib clang libclang-rt-14-dev)
+  packages+=(xvfb xauth xdotool assimp-testmodels python3-matplotlib clang libclang-rt-14-dev)
 fi
 
 missing=()

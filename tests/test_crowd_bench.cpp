@@ -61,8 +61,12 @@ TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
         EXPECT_FALSE(field["device"].empty());
         EXPECT_FALSE(field["commit"].empty());
         const bool skins = field["method"] != "vs" && field["method"] != "vs-instanced" && field["method"] != "static";
-        if (skins) EXPECT_GT(std::stod(field["gpu_skin_ms"]), 0.0) << line;
-        if (field["method"] == "two-pass") EXPECT_GT(std::stod(field["gpu_copy_ms"]), 0.0) << line;
+        if (skins) {
+            EXPECT_GT(std::stod(field["gpu_skin_ms"]), 0.0) << line;
+        }
+        if (field["method"] == "two-pass") {
+            EXPECT_GT(std::stod(field["gpu_copy_ms"]), 0.0) << line;
+        }
         seen.insert(field["model"] + "/" + field["method"] + "/" + field["characters"]);
     }
     for (const char* model : {"soldier", "horse"})

@@ -65,7 +65,8 @@ void RenderTarget::endRendering(VkCommandBuffer cmd) {
     vkCmdEndRendering(cmd);
     gpu::imageBarrier(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
                       {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
-                      {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
+                      // Any transfer: the readback copies, the viewer blits to its swapchain.
+                      {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 }
 

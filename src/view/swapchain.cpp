@@ -1,0 +1,205 @@
+#include "view/swapchain.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+
+namespace view {
+namespace {
+
+template <typename T, typename Query>
+std::vector<T> enumerate(Query query) {
+    std::uint32_t count = 0;
+    VK_CHECK(query(&count, nullptr));
+    std::vector<T> items(count);
+    VK_CHECK(query(&count, items.data()));
+    items.resize(count);
+    return items;
+}
+
+VkSurfaceFormatKHR chooseFormat(const gpu::VulkanContext& context, VkSurfaceKHR surface) {
+    const auto formats = enumerate<VkSurfaceFormatKHR>([&](std::uint32_t* n, VkSurfaceFormatKHR* f) {
+        return vkGetPhysicalDeviceSurfaceFormatsKHR(context.physicalDevice, surface, n, f);
+    });
+    // The scene image is sRGB. A blit between two sRGB images decodes and re-encodes, so the window
+    // shows the very bytes crowd-render writes; the channel order is the blit's business.
+    for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
+        VkFormatProperties properties;
+        vkGetPhysicalDeviceFormatProperties(context.physicalDevice, wanted, &properties);
+        if (!(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT)) continue;
+        for (const VkSurfaceFormatKHR& f : formats)
+            if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
+    }
+    throw gpu::Error("the window's surface offers neither B8G8R8A8_SRGB nor R8G8B8A8_SRGB on " +
+                     context.description.name + "; crowd-render renders without a window");
+}
+
+VkPresentModeKHR choosePresentMode(const gpu::VulkanContext& context, VkSurfaceKHR surface, bool vsync) {
+    if (vsync) return VK_PRESENT_MODE_FIFO_KHR;  // the one mode every surface has
+    const auto modes = enumerate<VkPresentModeKHR>([&](std::uint32_t* n, VkPresentModeKHR* m) {
+        return vkGetPhysicalDeviceSurfacePresentModesKHR(context.physicalDevice, surface, n, m);
+    });
+    // MAILBOX never waits for vblank and never tears; IMMEDIATE never waits but may tear.
+    for (VkPresentModeKHR wanted : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+        if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) return wanted;
+    std::fprintf(stderr, "crowd-view: --vsync off: the surface has only FIFO; frames stay synchronized "
+                         "to the display\n");
+    return VK_PRESENT_MODE_FIFO_KHR;
+}
+
+// 0xFFFFFFFF: the surface takes its size from the swapchain (Wayland); otherwise it is the window's.
+VkExtent2D extentFor(const VkSurfaceCapabilitiesKHR& caps, VkExtent2D size) {
+    if (caps.currentExtent.width != UINT32_MAX) return caps.currentExtent;
+    return {std::clamp(size.width, caps.minImageExtent.width, caps.maxImageExtent.width),
+            std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+}
+
+VkSemaphore createSemaphore(const gpu::VulkanContext& context) {
+    VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSemaphore(context.device, &info, nullptr, &semaphore));
+    return semaphore;
+}
+
+}  // namespace
+
+Swapchain::Swapchain(const gpu::VulkanContext& context, VkSurfaceKHR surface, VkExtent2D size, bool vsync,
+                     std::uint32_t framesInFlight)
+    : context_(context), surface_(surface) {
+    try {
+        VkBool32 supported = VK_FALSE;
+        VK_CHECK(
+            vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice, context.queueFamily, surface, &supported));
+        if (!supported)
+            throw gpu::Error("device " + context.description.name + " cannot present to this window (try --device)");
+        const VkSurfaceFormatKHR format = chooseFormat(context, surface);
+        format_ = format.format;
+        colorSpace_ = format.colorSpace;
+        presentMode_ = choosePresentMode(context, surface, vsync);
+        // vkAcquireNextImageKHR for frame N comes before the renderer waits for the fence of frame
+        // N - framesInFlight, so that frame's wait on its acquire semaphore may still be pending. One
+        // more semaphore in the ring makes frame N reuse the one of frame N - framesInFlight - 1,
+        // whose fence the renderer waited for while starting the previous frame.
+        for (std::uint32_t i = 0; i < framesInFlight + 1; ++i) acquired_.push_back(createSemaphore(context));
+        create(size, VK_NULL_HANDLE);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+Swapchain::~Swapchain() { release(); }
+
+void Swapchain::release() {
+    vkDeviceWaitIdle(context_.device);
+    for (VkSemaphore s : acquired_) vkDestroySemaphore(context_.device, s, nullptr);
+    for (VkSemaphore s : rendered_) vkDestroySemaphore(context_.device, s, nullptr);
+    acquired_.clear();
+    rendered_.clear();
+    destroyViews();
+    if (swapchain_) vkDestroySwapchainKHR(context_.device, swapchain_, nullptr);
+    swapchain_ = VK_NULL_HANDLE;
+    if (surface_) vkDestroySurfaceKHR(context_.instance, surface_, nullptr);
+    surface_ = VK_NULL_HANDLE;
+}
+
+bool Swapchain::recreate(VkExtent2D size) {
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice, surface_, &caps));
+    const VkExtent2D extent = extentFor(caps, size);
+    if (extent.width == 0 || extent.height == 0) return false;  // minimized since the caller looked
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    destroyViews();
+    VkSwapchainKHR old = swapchain_;
+    swapchain_ = VK_NULL_HANDLE;
+    try {
+        create(size, old);
+    } catch (...) {
+        vkDestroySwapchainKHR(context_.device, old, nullptr);
+        throw;
+    }
+    vkDestroySwapchainKHR(context_.device, old, nullptr);
+    return true;
+}
+
+void Swapchain::create(VkExtent2D size, VkSwapchainKHR old) {
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice, surface_, &caps));
+    extent_ = extentFor(caps, size);
+    if (extent_.width == 0 || extent_.height == 0)
+        throw gpu::Error("the window has no area to draw into (minimized at start?)");
+    if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
+        throw gpu::Error("the window's swapchain images cannot be blitted to on " + context_.description.name);
+    canReadBack_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+    minImageCount_ = caps.minImageCount + 1;  // one more than the minimum: never wait for the display to let one go
+    if (caps.maxImageCount > 0) minImageCount_ = std::min(minImageCount_, caps.maxImageCount);
+
+    VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+    info.surface = surface_;
+    info.minImageCount = minImageCount_;
+    info.imageFormat = format_;
+    info.imageColorSpace = colorSpace_;
+    info.imageExtent = extent_;
+    info.imageArrayLayers = 1;
+    info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                      (canReadBack_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : 0u);
+    info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.preTransform = caps.currentTransform;
+    info.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
+                              ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+                              : static_cast<VkCompositeAlphaFlagBitsKHR>(caps.supportedCompositeAlpha &
+                                                                         -caps.supportedCompositeAlpha);
+    info.presentMode = presentMode_;
+    // Not clipped: a screenshot must hold the whole image even where another window covers ours.
+    info.clipped = VK_FALSE;
+    info.oldSwapchain = old;
+    VK_CHECK(vkCreateSwapchainKHR(context_.device, &info, nullptr, &swapchain_));
+
+    images_ = enumerate<VkImage>([&](std::uint32_t* n, VkImage* i) {
+        return vkGetSwapchainImagesKHR(context_.device, swapchain_, n, i);
+    });
+    for (VkImage image : images_) {
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = format_;
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        VK_CHECK(vkCreateImageView(context_.device, &view, nullptr, &views_.emplace_back()));
+    }
+    // Kept across recreations (only ever added to): a present may still wait on one after the device
+    // is idle, and a semaphore is only safe to destroy when the presentation engine is done with it.
+    while (rendered_.size() < images_.size()) rendered_.push_back(createSemaphore(context_));
+}
+
+void Swapchain::destroyViews() {
+    for (VkImageView view : views_) vkDestroyImageView(context_.device, view, nullptr);
+    views_.clear();
+}
+
+std::optional<Swapchain::Frame> Swapchain::acquire() {
+    VkSemaphore semaphore = acquired_[nextAcquire_];
+    std::uint32_t index = 0;
+    const VkResult result =
+        vkAcquireNextImageKHR(context_.device, swapchain_, UINT64_MAX, semaphore, VK_NULL_HANDLE, &index);
+    if (result == VK_ERROR_OUT_OF_DATE_KHR) return std::nullopt;  // nothing signalled: the semaphore stays free
+    if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);            // suboptimal still acquired an image
+    nextAcquire_ = (nextAcquire_ + 1) % static_cast<std::uint32_t>(acquired_.size());
+    return Frame{index, images_[index], semaphore, rendered_[index]};
+}
+
+bool Swapchain::present(const Frame& frame) {
+    VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    info.waitSemaphoreCount = 1;
+    info.pWaitSemaphores = &frame.rendered;
+    info.swapchainCount = 1;
+    info.pSwapchains = &swapchain_;
+    info.pImageIndices = &frame.imageIndex;
+    const VkResult result = vkQueuePresentKHR(context_.queue, &info);
+    if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
+    VK_CHECK(result);
+    return true;
+}
+
+}  // namespace view
