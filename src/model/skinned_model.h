@@ -39,6 +39,19 @@ struct SkinnedModel {
     glm::vec3 boundsMin{0.0f};
     glm::vec3 boundsMax{0.0f};
 
+    // Levels of detail over the one vertex array (model/lod_builder.h fills them). Level l draws
+    // lods[l].indices, a triangle list that references only vertices [0, lods[l].vertexCount): the
+    // vertices are ordered so that a coarser level uses a prefix of a finer one's, and skinning work
+    // shrinks with the level. lods[0] is the full mesh (its indices equal `indices`). Empty until built.
+    struct Lod {
+        std::vector<std::uint32_t> indices;
+        std::uint32_t vertexCount = 0;
+    };
+    std::vector<Lod> lods;
+    // A sphere in model space holding every vertex in every pose of every clip (and the bind pose):
+    // xyz centre, w radius (model/pose_bounds.h). Culling tests it; zero until computed.
+    glm::vec4 poseSphere{0.0f};
+
     std::size_t triangleCount() const { return indices.size() / 3; }
     float height() const { return boundsMax.y - boundsMin.y; }
     // Index of the clip with this name, or -1.
