@@ -1,27 +1,27 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_ARB_shader_draw_parameters : require
-// Pass 2: draws characters from already-skinned world-space vertices (position, normal + material).
+// The draw pass from already-skinned world-space vertices (position; normal + pooled material).
+// Each draw is one character: firstInstance is its index, vertexOffset its first skinned vertex.
 #include "gpu_types.h"
 #include "shading.glsl.inc"
+#include "crowd_set.glsl.inc"
+#define VARYING out
+#include "draw_varyings.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(location = 0) in vec4 inPosition;
 layout(location = 1) in vec4 inNormal;
 
-layout(location = 0) out vec3 outNormal;
-layout(location = 1) out vec3 outAlbedo;
-layout(location = 2) out vec3 outWorld;
-layout(location = 3) out vec2 outUv;
-layout(location = 4) flat out uint outTextured;
-
 void main() {
+    CharacterRecord character = characters[gl_InstanceIndex];
+    ModelRecord model = models[character.ids.x];
+    uint material = uint(inNormal.w);
     gl_Position = scene.viewProjection * vec4(inPosition.xyz, 1.0);
-    outNormal = inNormal.xyz;
-    // The skinned buffer holds every character; minus the draw's vertexOffset, the index is the model's.
-    // firstInstance carries the character index, for its colour variation.
-    outAlbedo = characterColor(scene, uint(inNormal.w), uint(gl_InstanceIndex));
-    outUv = textureCoordinates[uint(gl_VertexIndex - gl_BaseVertexARB)];
-    outTextured = isTextured(scene, uint(inNormal.w));
-    outWorld = inPosition.xyz;
+    vNormal = inNormal.xyz;
+    vAlbedo = characterColor(scene, material, character.tint.rgb);
+    // Minus the draw's vertexOffset, the vertex index is the model's own.
+    vUv = textureCoordinates[model.info.x + uint(gl_VertexIndex - gl_BaseVertexARB)];
+    vTextureSlot = textureSlot(scene, material, model);
+    vWorld = inPosition.xyz;
 }

@@ -1,6 +1,7 @@
 // GPU-visible data layouts, declared once and included by both C++ and GLSL.
-// Every struct here uses only 16-byte members so std430 / std140 / C++ layouts agree;
-// gpu_types_check.cpp static_asserts the sizes and offsets on the C++ side.
+// Structs read as uniforms use only 16-byte members so std430 / std140 / C++ layouts agree; the few
+// written by atomics or read as indirect commands use plain 4-byte members (std430 only).
+// src/gpu/gpu_types_check.cpp static_asserts the sizes and offsets on the C++ side.
 #ifndef CROWD_GPU_TYPES_H
 #define CROWD_GPU_TYPES_H
 
@@ -14,10 +15,20 @@ using mat4 = glm::mat4;
 using uint = std::uint32_t;
 #endif
 
+// Levels of detail every model has (model/lod_builder.h); a (model, LOD) pair is a "bucket".
+#define LOD_COUNT 3
+// Models one crowd may hold, and base-colour textures among them.
+#define MAX_MODELS 16
+#define MAX_TEXTURES 8
+// Threads per workgroup of the cull, emit and skinning compute passes.
+#define CULL_WORKGROUP_SIZE 64
+
 // Most influences a vertex can have; the loaders reduce to the 4 largest.
 #define MAX_INFLUENCES 4
-// Characters' material colours live in a small palette in SceneUniforms.
-#define MAX_MATERIALS 16
+// Every model's material colours live in one palette in SceneUniforms (the pool offsets each
+// model's indices); one model has at most MAX_MODEL_MATERIALS.
+#define MAX_MODEL_MATERIALS 16
+#define MAX_MATERIALS 128
 
 // One bind-pose vertex as pass 1 (and the vertex-shader baseline) reads it.
 // normal.w holds the vertex's material index (a small integer stored exactly as a float).
@@ -37,13 +48,81 @@ struct BoneRows {
     vec4 row2;
 };
 
-// Push constants of the fragment skinning pass (pass 1).
+// One model of the geometry pool: where its levels of detail are and how big it is in any pose.
+struct ModelRecord {
+    uvec4 lodFirstIndex;   // xyz: first index of LOD 0, 1, 2 in the pooled index buffer
+    uvec4 lodIndexCount;   // xyz: indices of each LOD
+    uvec4 lodVertexCount;  // xyz: vertices each LOD references: a prefix of the model's vertices
+    uvec4 info;            // x: first vertex in the pooled bind-pose buffer, y: joints,
+                           // z: base-colour texture slot, w: unused
+    vec4 sphere;           // model space, holding every pose of every clip: xyz centre, w radius
+};
+
+// One character: what culling, LOD choice, skinning and drawing read. Characters find their bones
+// and their model by these fields, never by character x stride, so models of any size mix.
+struct CharacterRecord {
+    vec4 placement;  // xyz: world position of the model's origin, w: heading (radians about +y; 0 faces +z)
+    vec4 tint;       // rgb: colour multiplier (variety), w: uniform scale
+    uvec4 ids;       // x: model, y: first BoneRows of its bone block, z: rank among its model's
+                     // characters, w: unused
+};
+
+// One (model, LOD) bucket, fixed while the crowd is: where its visible characters are listed and
+// what each of them draws.
+struct BucketRecord {
+    uvec4 list;  // x: model, y: LOD, z: first entry of the bucket in the visible list, w: capacity
+                 // (characters of the model)
+    uvec4 mesh;  // x: first index, y: index count, z: vertices per character (the LOD's prefix),
+                 // w: model's first vertex in the pooled bind-pose buffer
+    uvec4 fixedLayout;  // x: first skinned vertex of the bucket when every character has a slot
+                        // (the static method), y: characters per skinning workgroup, z, w: unused
+};
+
+// One bucket's figures of this frame: the count is added to by culling, the bases are the prefix
+// sums the finalize pass writes.
+struct BucketFrame {
+    uint count;       // visible characters at this LOD
+    uint vertexBase;  // their first skinned vertex (dense: character k of the bucket at base + k x vertices)
+    uint drawBase;    // their first draw in the compacted draw list
+    uint unused;
+};
+
+// VkDrawIndexedIndirectCommand, as the cull passes write it.
+struct DrawIndexedCommand {
+    uint indexCount;
+    uint instanceCount;
+    uint firstIndex;
+    int vertexOffset;
+    uint firstInstance;
+};
+
+// Totals of a frame's draw lists, written by the finalize pass.
+struct DrawTotals {
+    uint drawCount;       // visible characters = draws in the compacted list
+    uint skinnedVertices; // vertices the skinning pass writes
+    uint unused0;
+    uint unused1;
+    uvec4 emitDispatch;   // indirect dispatch of the emit pass (x groups, y = z = 1)
+};
+
+// Per-frame parameters of the cull pass (a uniform buffer: the frustum alone is 96 bytes).
+struct CullUniforms {
+    vec4 planes[6];  // world-space frustum planes, normals pointing inside: a sphere is outside when
+                     // dot(n, centre) + w < -radius for some plane
+    vec4 camera;     // xyz: eye, w: pixels per unit of size at unit distance (height / (2 tan(fovY / 2)))
+    vec4 lod;        // x: LOD 0 threshold, y: LOD 1 threshold (projected sphere diameter in pixels),
+                     // z: hysteresis (fraction of a threshold), w: unused
+    uvec4 flags;     // x: characters, y: 1 = frustum culling, z: 1 = LOD selection (else all LOD 0),
+                     // w: buckets
+    uvec4 limits;    // x: most workgroups in a dispatch's x dimension, y-w: unused
+};
+
+// Push constants of the skinning passes: which bucket, and where its characters come from.
 struct SkinPassParams {
-    // x: characters in this target, y: vertices per character,
-    // z: rows per character, w: first character of this target
-    uvec4 counts;
-    // x: target width in texels, y: bone block stride in BoneRows, z, w: unused
-    uvec4 strides;
+    uvec4 bucket;  // x: bucket, y: 1 = fixed layout (every character, the static method), z, w: unused
+    // Fragment passes: x: target width in texels, y: first row of this target, z: rows of this
+    // target, w: unused
+    uvec4 target;
 };
 
 // Per-frame uniforms of the draw pass (pass 2), the ground and the vertex-shader baseline.
@@ -52,7 +131,8 @@ struct SceneUniforms {
     vec4 lightDirection;  // xyz: unit vector towards the light, w: ambient term
     vec4 skyColor;
     vec4 groundColor;     // xyz colour, w: checker tile size in metres
-    uvec4 materialFlags;  // x: bit m set when material m is multiplied by the base-colour texture
+    uvec4 materialFlags;  // bit m of (x, y, z, w)[m / 32] set when material m is multiplied by its
+                          // model's base-colour texture
     vec4 palette[MAX_MATERIALS];
 };
 

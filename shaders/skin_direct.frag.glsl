@@ -1,27 +1,31 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Pass 1 of "two-pass-direct": the paper's fragment-shader skinning, but each fragment stores its
-// skinned vertex straight into pass 2's vertex buffer (bound as a storage buffer). No RGBA32F image
-// and no image-to-buffer copy: the difference to "two-pass" is what that copy costs.
+// skinned vertex straight into the draw pass's vertex buffer (bound as a storage buffer). No RGBA32F
+// image and no image-to-buffer copy: the difference to "two-pass" is what that copy costs.
 #include "gpu_types.h"
 #include "skinning.glsl.inc"
-#include "skin_texel.glsl.inc"
 
 layout(push_constant) uniform Push { SkinPassParams params; };
 layout(std430, set = 0, binding = 0) readonly buffer BindPose { SkinVertex vertices[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Bones { BoneRows bones[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Positions { vec4 positions[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Normals { vec4 normals[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Characters { CharacterRecord characters[]; };
+layout(std430, set = 0, binding = 5) readonly buffer Buckets { BucketRecord buckets[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Frames { BucketFrame frames[]; };
+layout(std430, set = 0, binding = 7) readonly buffer List { uint list[]; };
+#include "skin_texel.glsl.inc"
+
+layout(location = 0) flat in uint inBucket;
 
 void main() {
-    uint character, vertexIndex;
-    if (!texelToCharacterVertex(params, uvec2(gl_FragCoord.xy), character, vertexIndex)) return;
-    SkinVertex v = vertices[vertexIndex];
-    uint base = character * params.strides.y;
-    Skinned s = skinVertex(v, bones[base + v.joints.x], bones[base + v.joints.y],
-                           bones[base + v.joints.z], bones[base + v.joints.w]);
-    // Same place the image copy would put it: character-major, characterStride = width * rows.
-    uint slot = character * params.strides.x * params.counts.z + vertexIndex;
-    positions[slot] = vec4(s.position, 1.0);
-    normals[slot] = vec4(s.normal, v.normal.w);
+    TexelVertex tv;
+    if (!texelVertex(inBucket, uvec2(gl_FragCoord.xy), tv)) return;
+    SkinVertex v = vertices[tv.vertex];
+    Skinned s = skinVertex(v, bones[tv.boneBase + v.joints.x], bones[tv.boneBase + v.joints.y],
+                           bones[tv.boneBase + v.joints.z], bones[tv.boneBase + v.joints.w]);
+    // The same slot the image copy would put it in.
+    positions[tv.slot] = vec4(s.position, 1.0);
+    normals[tv.slot] = vec4(s.normal, v.normal.w);
 }

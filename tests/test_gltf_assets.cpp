@@ -11,7 +11,7 @@
 
 #include "app/crowd_app.h"
 #include "model/gltf_loader.h"
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 #include "skin/cpu_skinning.h"
 #include "support/gltf_reference.h"
 #include "support/gpu_test.h"
@@ -188,11 +188,13 @@ std::vector<crowd::Character> mixedCharacters(const model::SkinnedModel& model, 
 
 // Largest distance of a method's skinned vertices from the CPU reference, over every character.
 double gpuError(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method) {
-    const model::SkinnedModel& m = crowd.model();
-    render::RendererOptions options;
+    const model::SkinnedModel& m = crowd.model(0);
+    frame::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
-    render::CrowdRenderer renderer(context, crowd, options);
+    options.cull.mode = render::CullMode::Off;  // every character, at full detail
+    options.cull.lod = false;
+    frame::CrowdRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
     renderer.finish();
@@ -202,8 +204,7 @@ double gpuError(const gpu::VulkanContext& context, const crowd::Crowd& crowd, sk
     for (std::uint32_t c = 0; c < crowd.size(); ++c) {
         crowd.animateCharacter(c, time, bones);
         const std::vector<skin::CpuSkinnedVertex> expected = skin::skinOnCpu(m, bones);
-        const test::ReadbackVertices read =
-            test::readSkinnedCharacter(context, renderer.method().skinnedVertices(), c, n);
+        const test::ReadbackVertices read = test::readSkinnedCharacter(context, renderer, c);
         for (std::uint32_t v = 0; v < n; ++v) {
             largest = std::max(largest, glm::length(glm::dvec3(read.positions[v]) - expected[v].position));
             EXPECT_EQ(read.normals[v].w, m.vertices[v].normal.w) << "material index lost at vertex " << v;
@@ -214,10 +215,10 @@ double gpuError(const gpu::VulkanContext& context, const crowd::Crowd& crowd, sk
 
 render::Rgba8Image renderImage(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
                                float time = 0.5f) {
-    render::RendererOptions options;
+    frame::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
-    render::CrowdRenderer renderer(context, crowd, options);
+    frame::CrowdRenderer renderer(context, crowd, options);
     renderer.renderFrame(time);
     return renderer.readback();
 }

@@ -7,7 +7,7 @@
 
 #include "app/crowd_app.h"
 #include "model/procedural_models.h"
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 #include "skin/cpu_skinning.h"
 #include "skin/fragment_skinning.h"
 #include "support/gpu_test.h"
@@ -30,6 +30,14 @@ std::vector<crowd::Character> mixedCharacters(const model::SkinnedModel& model, 
     return characters;
 }
 
+// Every character drawn at LOD 0: no culling, no LOD.
+render::CullSettings fullDetail() {
+    render::CullSettings cull;
+    cull.mode = render::CullMode::Off;
+    cull.lod = false;
+    return cull;
+}
+
 // Largest distance between GPU pass-1 output and the CPU reference, over every vertex of every character.
 struct SkinError {
     double position = 0.0;
@@ -37,25 +45,29 @@ struct SkinError {
 };
 
 SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                         const crowd::Crowd& crowd, std::uint32_t maxTargetDimension, skin::Method method) {
-    render::RendererOptions options;
+                         const crowd::Crowd& crowd, std::uint32_t maxTargetDimension, skin::Method method,
+                         const render::CullSettings& cull = fullDetail()) {
+    frame::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
     options.maxTargetDimension = maxTargetDimension;
-    render::CrowdRenderer renderer(context, crowd, options);
+    options.cull = cull;
+    frame::CrowdRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
     renderer.finish();
 
     SkinError error;
     std::vector<gpu::BoneRows> bones(model.skeleton.jointCount());
-    const auto vertexCount = static_cast<std::uint32_t>(model.vertices.size());
-    for (std::uint32_t c = 0; c < crowd.size(); ++c) {
+    const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(context, renderer);
+    EXPECT_EQ(drawn.size(), crowd.size()) << "every character is in view";
+    for (const auto& [c, where] : drawn) {
+        EXPECT_EQ(where.vertexCount, render::lodsOf(model)[where.lod].vertexCount);
         crowd.animateCharacter(c, time, bones);
         const std::vector<skin::CpuSkinnedVertex> expected = skin::skinOnCpu(model, bones);
-        const test::ReadbackVertices gpu =
-            test::readSkinnedCharacter(context, renderer.method().skinnedVertices(), c, vertexCount);
-        for (std::uint32_t v = 0; v < vertexCount; ++v) {
+        const test::ReadbackVertices gpu = test::readSkinnedVertices(context, renderer.method().skinnedVertices(),
+                                                                     where.firstVertex, where.vertexCount);
+        for (std::uint32_t v = 0; v < where.vertexCount; ++v) {
             error.position = std::max(error.position, glm::length(glm::dvec3(gpu.positions[v]) - expected[v].position));
             error.normal = std::max(error.normal, glm::length(glm::dvec3(gpu.normals[v]) - expected[v].normal));
             EXPECT_EQ(gpu.normals[v].w, model.vertices[v].normal.w) << "material index lost at vertex " << v;
@@ -88,10 +100,12 @@ TEST_F(GpuTest, TwoPassTiledTargetsMatchCpuReference) {
     // as a large crowd does against the real 16k-32k limits.
     const model::SkinnedModel soldier = model::makeSoldier(1);
     const std::uint32_t limit = 256;
-    const skin::SkinTargetLayout layout = skin::planSkinTargets(
-        static_cast<std::uint32_t>(soldier.vertices.size()), 6, limit);
-    ASSERT_GT(layout.rowsPerCharacter, 1u);
+    // 6 characters of 810 vertices wrap over rows of 256 texels, and 19 rows over... one tile; 64
+    // texels make several tiles (each 64 x 64), with characters split across tiles.
+    ASSERT_GT(soldier.vertices.size(), limit);
     expectPassOneMatchesCpu(*context, soldier, limit);
+    ASSERT_GT(skin::planSkinTargets(6 * soldier.vertices.size(), 64).tileCount, 1u);
+    expectPassOneMatchesCpu(*context, soldier, 64);
 }
 
 TEST_F(GpuTest, DirectFragmentAndComputeSkinningMatchCpuReference) {
@@ -107,10 +121,10 @@ TEST_F(GpuTest, DirectFragmentAndComputeSkinningMatchCpuReference) {
 TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
     const model::SkinnedModel soldier = model::makeSoldier(1);
     const crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
-    render::RendererOptions options;
+    frame::RendererOptions options;
     options.size = {32, 32};
     options.maxTargetDimension = 64;
-    render::CrowdRenderer renderer(*context, crowd, options);
+    frame::CrowdRenderer renderer(*context, crowd, options);
     const auto& layout = static_cast<skin::FragmentSkinning&>(renderer.method()).layout();
     EXPECT_GT(layout.tileCount, 1u);
     for (std::uint32_t t = 0; t < layout.tileCount; ++t) {
@@ -127,15 +141,15 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
     characters[1] = {walk, 0.2f, 1.0f, glm::vec3(4, 0, 0), 0.0f};  // same phase, elsewhere
     characters[2] = {walk, 0.6f, 1.0f, glm::vec3(8, 0, 0), 0.0f};  // other phase
     const crowd::Crowd crowd(soldier, characters);
-    render::RendererOptions options;
+    frame::RendererOptions options;
     options.size = {32, 32};
-    render::CrowdRenderer renderer(*context, crowd, options);
+    options.cull = fullDetail();
+    frame::CrowdRenderer renderer(*context, crowd, options);
     renderer.renderFrame(0.3f);
     renderer.finish();
     const auto n = static_cast<std::uint32_t>(soldier.vertices.size());
     std::vector<test::ReadbackVertices> read;
-    for (std::uint32_t c = 0; c < 3; ++c)
-        read.push_back(test::readSkinnedCharacter(*context, renderer.method().skinnedVertices(), c, n));
+    for (std::uint32_t c = 0; c < 3; ++c) read.push_back(test::readSkinnedCharacter(*context, renderer, c));
     double equalPhase = 0.0, otherPhase = 0.0;
     for (std::uint32_t v = 0; v < n; ++v) {
         // Compare poses in each character's own frame: subtract its placement.
@@ -153,10 +167,10 @@ namespace {
 
 render::Rgba8Image renderScene(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
                                std::uint32_t frames) {
-    render::RendererOptions options;
+    frame::RendererOptions options;
     options.size = {192, 128};
     options.method = method;
-    render::CrowdRenderer renderer(context, crowd, options);
+    frame::CrowdRenderer renderer(context, crowd, options);
     for (std::uint32_t f = 0; f < frames; ++f) renderer.renderFrame(app::frameTime(f));
     return renderer.readback();
 }

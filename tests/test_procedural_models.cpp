@@ -181,7 +181,7 @@ TEST_P(ProceduralModel, NormalsAreUnitLength) {
 
 TEST_P(ProceduralModel, MaterialIndicesAreWholeNumbersIntoAPalette) {
     ASSERT_FALSE(m.materialColors.empty());
-    EXPECT_LE(m.materialColors.size(), static_cast<std::size_t>(MAX_MATERIALS));
+    EXPECT_LE(m.materialColors.size(), static_cast<std::size_t>(MAX_MODEL_MATERIALS));
     for (const glm::vec4& c : m.materialColors) {
         EXPECT_TRUE(glm::all(glm::greaterThanEqual(c, glm::vec4(0.0f))));
         EXPECT_TRUE(glm::all(glm::lessThanEqual(c, glm::vec4(1.0f))));

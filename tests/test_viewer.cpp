@@ -146,8 +146,8 @@ TEST(ViewerCamera, CenterOnOrbitsTheCharacterFromAFewHeightsAway) {
 // ---------------------------------------------------------------------------------------------
 // Frame statistics
 
-render::FrameStats frameStats(double intervalMs, double skinMs) {
-    render::FrameStats stats;
+frame::FrameStats frameStats(double intervalMs, double skinMs) {
+    frame::FrameStats stats;
     stats.intervalMs = intervalMs;
     stats.animateMs = 1.0;
     stats.recordMs = 0.5;

@@ -1,8 +1,8 @@
 #include "app/benchmark_run.h"
 
 #include "app/crowd_app.h"
+#include "frame/crowd_renderer.h"
 #include "gpu/vulkan_context.h"
-#include "render/crowd_renderer.h"
 
 namespace app {
 
@@ -10,24 +10,32 @@ bool timestampsBracketAllWork(const gpu::VulkanContext& context) {
     return context.timestampPeriodNs() > 0.0 && context.description.driver.rfind("llvmpipe", 0) != 0;
 }
 
-RunSummary runScenario(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                       const ScenarioOptions& options) {
-    checkCrowdFits(context, model, options.count, options.method, options.size);
-    SceneOptions scene;
+RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& models, const ScenarioOptions& options) {
+    SceneOptions scene = options.scene.scene;
     scene.count = options.count;
     scene.seed = options.seed;
-    const crowd::Crowd crowd(model, buildCharacters(model, scene));
-    render::RendererOptions rendererOptions;
+    const crowd::Crowd crowd(models.pointers(), buildCharacters(models, scene));
+    checkCrowdFits(context, crowd, options.method, options.size);
+    frame::RendererOptions rendererOptions;
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
+    rendererOptions.cull = options.scene.cull;
     rendererOptions.passClock = options.passClock;
-    render::CrowdRenderer renderer(context, crowd, rendererOptions);
+    frame::CrowdRenderer renderer(context, crowd, rendererOptions);
+    const render::CrowdShape shape = crowdShape(crowd);
+    const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     const std::uint32_t total = options.warmup + options.frames;
-    for (std::uint32_t frame = 0; frame < total; ++frame) renderer.renderFrame(frameTime(frame));
+    for (std::uint32_t frame = 0; frame < total; ++frame) {
+        renderer.camera = render::cameraOnPath(options.scene.camera, shape, aspect, frameTime(frame));
+        renderer.renderFrame(frameTime(frame));
+    }
     renderer.finish();
 
     RunSummary summary = summarize(renderer.stats(), options.warmup);
-    summary.model = model.name;
+    summary.scene = scene.scene;
+    summary.culling = std::string(render::cullModeName(options.scene.cull.mode)) + ", LOD " +
+                      (options.scene.cull.lod ? "on" : "off");
+    summary.model = modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = options.count;
     summary.device = context.description.name;

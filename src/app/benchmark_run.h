@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "app/crowd_app.h"
+#include "app/options.h"
 #include "app/report.h"
 #include "gpu/gpu_timer.h"
 #include "model/skinned_model.h"
@@ -14,6 +16,8 @@ namespace gpu { class VulkanContext; }
 namespace app {
 
 struct ScenarioOptions {
+    // The crowd: a scene preset with its models, culling, LOD and camera path; count as given.
+    RenderOptions scene;
     std::uint32_t count = 1;
     skin::Method method = skin::Method::TwoPass;
     std::uint32_t warmup = 10;
@@ -23,10 +27,9 @@ struct ScenarioOptions {
     gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
 };
 
-// Renders the default layout of `model` (its default clip, seeded phases) and summarizes the
-// measured frames. Throws gpu::Error when the crowd cannot fit the device.
-RunSummary runScenario(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                       const ScenarioOptions& options);
+// Renders the scene's crowd of these models (their default clip, seeded phases) along the scene's
+// camera path and summarizes the measured frames. Throws gpu::Error when the crowd cannot fit the device.
+RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& models, const ScenarioOptions& options);
 
 // Whether the device's timestamps can be trusted to bracket every pass. lavapipe's do not bracket
 // compute dispatches (it reported 0.04 ms for 23 ms of work), so there passes are timed by fences.

@@ -1,6 +1,8 @@
 #include "app/crowd_app.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 
 #include "anim/local_to_model.h"
@@ -11,7 +13,10 @@
 #include "gpu/vulkan_error.h"
 #include "model/gltf_loader.h"
 #include "model/procedural_models.h"
-#include "skin/fragment_skinning.h"
+#include "render/crowd_buffers.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
+#include "skin/skin_target_layout.h"
 
 namespace app {
 
@@ -56,29 +61,119 @@ std::vector<skin::CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, 
     return skin::skinOnCpu(model, bones);
 }
 
+std::vector<std::pair<std::string, float>> parseModelList(const std::string& list) {
+    std::vector<std::pair<std::string, float>> entries;
+    std::size_t begin = 0;
+    while (begin <= list.size()) {
+        const std::size_t comma = std::min(list.find(',', begin), list.size());
+        std::string item = list.substr(begin, comma - begin);
+        float weight = 1.0f;
+        // A weight follows the last colon, unless what follows is no number (a path may hold colons).
+        if (const std::size_t colon = item.rfind(':'); colon != std::string::npos) {
+            const std::string text = item.substr(colon + 1);
+            float value = 0.0f;
+            const auto [ptr, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (!text.empty() && error == std::errc() && ptr == text.data() + text.size()) {
+                if (!(value > 0.0f) || !std::isfinite(value))
+                    throw gpu::Error("--model: the weight of '" + item + "' must be a positive number");
+                weight = value;
+                item = item.substr(0, colon);
+            }
+        }
+        if (item.empty()) throw gpu::Error("--model: empty model name in '" + list + "'");
+        entries.emplace_back(item, weight);
+        begin = comma + 1;
+    }
+    if (entries.size() > MAX_MODELS)
+        throw gpu::Error("--model: at most " + std::to_string(MAX_MODELS) + " models in one crowd");
+    return entries;
+}
+
+std::vector<const model::SkinnedModel*> CrowdModels::pointers() const {
+    std::vector<const model::SkinnedModel*> result;
+    for (const auto& m : models) result.push_back(m.get());
+    return result;
+}
+
+std::string modelNames(const CrowdModels& models) {
+    std::string names;
+    for (const auto& m : models.models) names += (names.empty() ? "" : "+") + m->name;
+    return names;
+}
+
+CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes) {
+    CrowdModels result;
+    for (const auto& [name, weight] : parseModelList(list)) {
+        result.models.push_back(std::make_unique<model::SkinnedModel>(loadModel(name, seed, notes)));
+        result.weights.push_back(weight);
+    }
+    return result;
+}
+
+std::vector<crowd::Character> buildCharacters(const CrowdModels& models, const SceneOptions& scene) {
+    crowd::LayoutOptions layout;
+    layout.count = scene.count;
+    layout.seed = scene.seed;
+    layout.randomClips = scene.clip == "random";
+    layout.weights = models.weights;
+    const bool several = models.models.size() > 1;
+    for (const auto& m : models.models) {
+        int clip = -1;
+        if (!layout.randomClips) {
+            try {
+                clip = resolveClip(*m, scene.clip);
+            } catch (const gpu::Error&) {
+                if (!several) throw;
+            }
+        }
+        layout.clips.push_back(clip);
+        const float height = m->height();
+        layout.scales.push_back(several && height > 0.0f && (height < 0.1f || height > 10.0f) ? 1.8f / height : 1.0f);
+    }
+    return crowd::gridLayout(models.pointers(), layout);
+}
+
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const SceneOptions& scene) {
     crowd::LayoutOptions layout;
     layout.count = scene.count;
     layout.seed = scene.seed;
     layout.randomClips = scene.clip == "random";
-    layout.clip = layout.randomClips ? -1 : resolveClip(model, scene.clip);
-    return crowd::gridLayout(model, layout);
+    layout.clips = {layout.randomClips ? -1 : resolveClip(model, scene.clip)};
+    const model::SkinnedModel* models[1] = {&model};
+    return crowd::gridLayout(models, layout);
 }
 
-void checkCrowdFits(const gpu::VulkanContext& context, const model::SkinnedModel& model, std::uint32_t count,
-                    skin::Method method, VkExtent2D size) {
-    const auto vertices = static_cast<std::uint32_t>(model.vertices.size());
-    const std::uint64_t boneBytes = static_cast<std::uint64_t>(count) *
-                                    render::boneStrideFor(context, static_cast<std::uint32_t>(model.skeleton.jointCount())) *
-                                    sizeof(gpu::BoneRows);
-    const std::uint64_t needed = boneBytes +
-                                 skin::estimateMethodBytes(method, vertices, count, skin::maxSkinTargetDimension(context, 0)) +
-                                 static_cast<std::uint64_t>(size.width) * size.height * 8;
+std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
+                                 VkExtent2D size) {
+    // Every character at LOD 0 (a frame's worst case) and at every LOD (the static method's slots).
+    std::uint64_t skinnedCapacity = 0, fixedCapacity = 0;
+    std::vector<std::vector<model::SkinnedModel::Lod>> lods;
+    for (const model::SkinnedModel* m : crowd.models()) lods.push_back(render::lodsOf(*m));
+    for (const crowd::Character& c : crowd.characters()) {
+        skinnedCapacity += lods[c.model][0].vertexCount;
+        for (const model::SkinnedModel::Lod& lod : lods[c.model]) fixedCapacity += lod.vertexCount;
+    }
+    const std::uint64_t characters = crowd.size();
+    const std::uint64_t needed =
+        render::planBones(context, crowd).bytes() + characters * sizeof(gpu::CharacterRecord) +
+        render::DrawLists::bytesFor(characters, static_cast<std::uint32_t>(crowd.models().size() * LOD_COUNT)) +
+        skin::estimateMethodBytes(method, characters, skinnedCapacity, fixedCapacity,
+                                  skin::maxSkinTargetDimension(context, 0)) +
+        static_cast<std::uint64_t>(size.width) * size.height * 8;
+    return needed;
+}
+
+void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size) {
+    const std::uint64_t needed = estimateCrowdBytes(context, crowd, method, size);
     const std::uint64_t available = context.deviceLocalBytes();
     if (needed > available)
-        throw gpu::Error("--count " + std::to_string(count) + ": " + skin::methodName(method) + " needs about " +
+        throw gpu::Error("--count " + std::to_string(crowd.size()) + ": " + skin::methodName(method) + " needs about " +
                          gpu::formatBytes(needed) + " of device memory; " + context.description.name + " has " +
                          gpu::formatBytes(available));
+}
+
+render::CrowdShape crowdShape(const crowd::Crowd& crowd) {
+    return {crowd.center(), crowd.radius(), crowd.tallestHeight()};
 }
 
 }  // namespace app

@@ -1,13 +1,16 @@
 #pragma once
 // What the programs share: building the model and crowd from options, checking the crowd fits the
 // device, and running the headless render loop.
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/options.h"
 #include "crowd/crowd.h"
 #include "model/skinned_model.h"
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
+#include "render/camera_path.h"
 #include "skin/cpu_skinning.h"
 
 namespace gpu { class VulkanContext; }
@@ -29,12 +32,34 @@ std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& cli
 // skeleton's root transform), skinning matrices, skin.
 std::vector<skin::CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, std::uint32_t clip, float time);
 
-// The crowd's characters for the scene options (grid layout, clip by name or index, or random).
+// --model's list: NAME[:WEIGHT],... with positive weights (1 when left out). Throws gpu::Error.
+std::vector<std::pair<std::string, float>> parseModelList(const std::string& list);
+
+// The models of a crowd and each one's share of it.
+struct CrowdModels {
+    std::vector<std::unique_ptr<model::SkinnedModel>> models;
+    std::vector<float> weights;
+    std::vector<const model::SkinnedModel*> pointers() const;
+};
+// "soldier+horse": the models' own names, for reports.
+std::string modelNames(const CrowdModels& models);
+CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes = nullptr);
+
+// The crowd's characters for the scene options (grid layout, models by weight, clip by name or index,
+// or random). In a crowd of several models, a named clip a model lacks leaves it its default clip, and
+// models far from human size (under 0.1 or over 10 units tall, as some glTF files are) are scaled to
+// 1.8 units so that they stand together.
+std::vector<crowd::Character> buildCharacters(const CrowdModels& models, const SceneOptions& scene);
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const SceneOptions& scene);
 
+// Device memory the crowd needs with this method and image size (the sizes the allocations will have).
+std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
+                                 VkExtent2D size);
 // Throws a one-line gpu::Error when the crowd cannot fit in the device's memory for this method.
-void checkCrowdFits(const gpu::VulkanContext& context, const model::SkinnedModel& model, std::uint32_t count,
-                    skin::Method method, VkExtent2D size);
+void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size);
+
+// Where the crowd stands, for camera paths.
+render::CrowdShape crowdShape(const crowd::Crowd& crowd);
 
 // Animation time of frame `index`: a fixed 60 Hz step, so runs are reproducible.
 inline float frameTime(std::uint32_t index) { return static_cast<float>(index) / 60.0f; }

@@ -12,6 +12,7 @@
 #include "app/benchmark_run.h"
 #include "app/crowd_app.h"
 #include "app/options.h"
+#include "app/scene_presets.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "render/png_writer.h"
@@ -25,7 +26,12 @@ namespace {
 const char* kUsage = R"(crowd-bench: measures every skinning method on crowds of growing size (the paper's Table 1).
 
 usage: crowd-bench [options]
-  --models LIST        comma-separated models (default soldier,horse)
+  --scene NAME         measure a scene (paper-fig3, paper-fig4, paper-fig5, mixed, stress, default) with
+                       its crowd, culling, LOD and camera path instead of Table 1; its count unless
+                       --counts is given
+  --lod on|off         override the levels of detail (Table 1: off, as in the paper)
+  --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
+  --models LIST        comma-separated models, each measured alone (default soldier,horse)
   --methods LIST       comma-separated methods (default vs,vs-instanced,two-pass,two-pass-direct,compute,static)
   --counts LIST        comma-separated crowd sizes (default 1,16,64,256,1024,2048,4096)
   --frames N           measured frames per configuration (default 60)
@@ -44,8 +50,19 @@ Frame times are wall clock between frame starts with two frames in flight; per-p
 from the clock named in each row.
 )";
 
+app::RenderOptions tableOneScene() {
+    app::RenderOptions scene = app::parseRenderOptions({"--scene", "default"});
+    scene.scene.scene = "table-1";
+    scene.cull.mode = render::CullMode::Off;
+    scene.cull.lod = false;
+    return scene;
+}
+
 struct BenchOptions {
+    // Each entry is one crowd's --model list (a scene's may mix models: soldier:3,horse:1).
     std::vector<std::string> models{"soldier", "horse"};
+    // The scene and its settings; Table 1 is the paper's: no culling, no LOD, the whole crowd in view.
+    app::RenderOptions scene = tableOneScene();
     std::vector<std::string> methods;
     std::vector<std::uint32_t> counts{1, 16, 64, 256, 1024, 2048, 4096};
     std::uint32_t frames = 60, warmup = 10, seed = 1;
@@ -65,6 +82,7 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     BenchOptions o;
+    bool sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
     for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& flag = args[i];
@@ -75,9 +93,25 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         if (flag == "--help" || flag == "-h") o.help = true;
         else if (flag == "--validation") o.validation = true;
         else if (flag == "--quick") o.counts = {1, 16}, o.frames = 5, o.warmup = 2, o.size = {320, 180};
-        else if (flag == "--models") o.models = splitList(flag, next());
+        else if (flag == "--scene") {
+            const app::ScenePreset& preset = app::findScenePreset(next());
+            const render::CullSettings keep = o.scene.cull;
+            o.scene = app::parseRenderOptions({"--scene", preset.name});
+            if (lodGiven) o.scene.cull.lod = keep.lod;
+            if (cullGiven) o.scene.cull.mode = keep.mode;
+            if (!modelsGiven) o.models = {preset.models};
+            if (!countsGiven) o.counts = {preset.count};
+            sceneGiven = true;
+        } else if (flag == "--lod") {
+            o.scene.cull.lod = app::parseRenderOptions({"--lod", next()}).cull.lod;
+            lodGiven = true;
+        } else if (flag == "--cull") {
+            o.scene.cull.mode = app::parseRenderOptions({"--cull", next()}).cull.mode;
+            cullGiven = true;
+        } else if (flag == "--models") o.models = splitList(flag, next()), modelsGiven = true;
         else if (flag == "--methods") o.methods = splitList(flag, next());
         else if (flag == "--counts") {
+            countsGiven = true;
             o.counts.clear();
             for (const std::string& c : splitList(flag, next())) o.counts.push_back(app::parseCount(flag, c, 1, app::kMaxCharacters));
         } else if (flag == "--frames") o.frames = app::parseCount(flag, next(), 1, 100000);
@@ -90,6 +124,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         else if (flag == "--seed") o.seed = app::parseCount(flag, next(), 0, UINT32_MAX);
         else throw gpu::Error("unknown option '" + flag + "' (see --help)");
     }
+    (void)sceneGiven;
     skin::Method method;
     for (const std::string& m : o.methods)
         if (!skin::parseMethod(m, method)) throw gpu::Error("--methods: unknown method '" + m + "'");
@@ -105,15 +140,17 @@ std::string utcDate() {
     return text;
 }
 
-app::BenchResult measure(const gpu::VulkanContext& context, const model::SkinnedModel& model,
+app::BenchResult measure(const gpu::VulkanContext& context, const app::CrowdModels& models,
                          const BenchOptions& options, skin::Method method, std::uint32_t count, bool fencePasses) {
+    const model::SkinnedModel& model = *models.models.front();
     app::BenchResult result;
-    result.model = model.name;
+    result.model = app::modelNames(models);
     result.method = skin::methodName(method);
     result.count = count;
     result.vertices = static_cast<std::uint32_t>(model.vertices.size());
     result.triangles = static_cast<std::uint32_t>(model.triangleCount());
     app::ScenarioOptions scenario;
+    scenario.scene = options.scene;
     scenario.count = count;
     scenario.method = method;
     scenario.warmup = options.warmup;
@@ -121,14 +158,14 @@ app::BenchResult measure(const gpu::VulkanContext& context, const model::Skinned
     scenario.size = options.size;
     scenario.seed = options.seed;
     try {
-        result.frame = app::runScenario(context, model, scenario);
+        result.frame = app::runScenario(context, models, scenario);
         result.passes = result.frame;
         if (fencePasses) {
             // A second, serialized run whose passes are timed by fences; fewer frames suffice.
             scenario.passClock = gpu::PassClock::FenceWallClock;
             scenario.warmup = std::min(options.warmup, 2u);
             scenario.frames = std::max(3u, options.frames / 4);
-            result.passes = app::runScenario(context, model, scenario);
+            result.passes = app::runScenario(context, models, scenario);
         }
         result.ok = true;
     } catch (const gpu::Error& error) {
@@ -150,15 +187,15 @@ int run(const BenchOptions& options, const std::string& command) {
     std::vector<std::string> modelNames;  // as the models name themselves (a file's model is not its path)
     const std::size_t total = options.models.size() * options.methods.size() * options.counts.size();
     for (const std::string& modelName : options.models) {
-        const model::SkinnedModel model = app::loadModel(modelName, options.seed);
-        modelNames.push_back(model.name);
+        const app::CrowdModels models = app::loadModels(modelName, options.seed);
+        modelNames.push_back(app::modelNames(models));
         for (std::uint32_t count : options.counts)
             for (const std::string& methodName : options.methods) {
                 skin::Method method;
                 skin::parseMethod(methodName, method);
-                std::fprintf(stderr, "[%zu/%zu] %s %s x %u\n", results.size() + 1, total, model.name.c_str(),
+                std::fprintf(stderr, "[%zu/%zu] %s %s x %u\n", results.size() + 1, total, modelNames.back().c_str(),
                              methodName.c_str(), count);
-                results.push_back(measure(context, model, options, method, count, fencePasses));
+                results.push_back(measure(context, models, options, method, count, fencePasses));
             }
     }
 
@@ -166,6 +203,9 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
+    std::printf("scene %s: culling %s, LOD %s, camera %s\n", options.scene.scene.scene.c_str(),
+                render::cullModeName(options.scene.cull.mode), options.scene.cull.lod ? "on" : "off",
+                render::cameraPathName(options.scene.camera));
     app::printTable1(results, modelNames, options.methods, options.counts);
     app::printPassTable(results);
 

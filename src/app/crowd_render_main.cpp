@@ -14,7 +14,7 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "model/obj_export.h"
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 #include "render/png_writer.h"
 
 namespace {
@@ -34,9 +34,11 @@ float parseSeconds(const std::string& text) {
     return seconds;
 }
 
+// --list-clips and --export-pose take one model: the first of --model's list.
 model::SkinnedModel loadAndNote(const app::RenderOptions& options) {
     std::vector<std::string> notes;
-    model::SkinnedModel model = app::loadModel(options.scene.model, options.scene.seed, &notes);
+    model::SkinnedModel model = app::loadModel(app::parseModelList(options.scene.model).front().first,
+                                               options.scene.seed, &notes);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     return model;
 }
@@ -79,20 +81,30 @@ int run(const app::RenderOptions& options) {
     render::checkWritable(options.out);
     if (!options.json.empty()) render::checkWritable(options.json);
 
-    const model::SkinnedModel model = loadAndNote(options);
+    std::vector<std::string> notes;
+    const app::CrowdModels models = app::loadModels(options.scene.model, options.scene.seed, &notes);
+    for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     gpu::VulkanContext context({options.validation, options.device, {}, false});
-    app::checkCrowdFits(context, model, options.scene.count, options.method, options.size);
-    const crowd::Crowd crowd(model, app::buildCharacters(model, options.scene));
+    const crowd::Crowd crowd(models.pointers(), app::buildCharacters(models, options.scene));
+    app::checkCrowdFits(context, crowd, options.method, options.size);
 
-    render::RendererOptions rendererOptions;
+    frame::RendererOptions rendererOptions;
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
-    render::CrowdRenderer renderer(context, crowd, rendererOptions);
-    for (std::uint32_t frame = 0; frame < options.frames; ++frame) renderer.renderFrame(app::frameTime(frame));
+    rendererOptions.cull = options.cull;
+    frame::CrowdRenderer renderer(context, crowd, rendererOptions);
+    const render::CrowdShape shape = app::crowdShape(crowd);
+    const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
+    for (std::uint32_t frame = 0; frame < options.frames; ++frame) {
+        renderer.camera = render::cameraOnPath(options.camera, shape, aspect, app::frameTime(frame));
+        renderer.renderFrame(app::frameTime(frame));
+    }
     render::writePng(options.out, renderer.readback());
 
     app::RunSummary summary = app::summarize(renderer.stats(), std::min(5u, options.frames / 4));
-    summary.model = model.name;
+    summary.scene = options.scene.scene;
+    summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off");
+    summary.model = app::modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = crowd.size();
     summary.device = context.description.name;

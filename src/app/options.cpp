@@ -1,6 +1,9 @@
 #include "app/options.h"
 
 #include <charconv>
+#include <cmath>
+
+#include "app/scene_presets.h"
 
 #include "gpu/vulkan_error.h"
 
@@ -20,9 +23,18 @@ const char* renderUsage() {
     return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
 
 usage: crowd-render [options]
-  --model soldier|horse|FILE
-                          built-in character (default soldier) or a skinned glTF 2.0 file (.gltf/.glb)
+  --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed or stress: a crowd, its
+                          culling and LOD, and a camera path (flags beside it override)
+  --model LIST            soldier, horse or a skinned glTF 2.0 file (.gltf/.glb); several as
+                          NAME[:WEIGHT],... e.g. soldier:3,horse:1 (default soldier)
   --count N               characters, 1..16777216 (default 1024)
+  --lod on|off            three levels of detail chosen by projected size (default on)
+  --cull gpu|cpu|off      frustum culling and LOD choice on the GPU, on the CPU (the reference), or
+                          no culling (default gpu)
+  --lod-thresholds A,B    LOD 0 while a character's pose sphere is at least A pixels across, LOD 1
+                          while at least B, else LOD 2 (default 150,50)
+  --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
+                          fraction of it, 0..0.5 (default 0.1)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
   --method NAME           skinning method: two-pass (default, the paper's), vs (the paper's baseline),
                           vs-instanced, two-pass-direct, compute, static (no skinning: the ceiling)
@@ -61,8 +73,62 @@ VkExtent2D parseSize(const std::string& flag, const std::string& text) {
     return {width, height};
 }
 
+float parseNumber(const std::string& flag, const std::string& text, float min, float max) {
+    float value = 0.0f;
+    const char* end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || ptr != end || !std::isfinite(value))
+        throw gpu::Error(flag + ": '" + text + "' is not a number");
+    if (value < min || value > max)
+        throw gpu::Error(flag + ": " + text + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+    return value;
+}
+
+namespace {
+
+bool parseOnOff(const std::string& flag, const std::string& text) {
+    if (text == "on") return true;
+    if (text == "off") return false;
+    throw gpu::Error(flag + ": '" + text + "' is not on or off");
+}
+
+void parseThresholds(const std::string& flag, const std::string& text, render::CullSettings& cull) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) throw gpu::Error(flag + ": '" + text + "' is not of the form A,B (pixels)");
+    const float a = parseNumber(flag, text.substr(0, comma), 0.0f, 1e6f);
+    const float b = parseNumber(flag, text.substr(comma + 1), 0.0f, 1e6f);
+    if (!(a > b && b > 0.0f))
+        throw gpu::Error(flag + ": thresholds " + text + " are out of order (need A > B > 0: LOD 0 above A pixels, "
+                         "LOD 1 above B)");
+    cull.lodThresholds[0] = a;
+    cull.lodThresholds[1] = b;
+}
+
+// Sets the crowd, culling and camera of a preset; flags parsed afterwards override them.
+void applyPreset(const ScenePreset& preset, RenderOptions& options) {
+    options.scene.scene = preset.name;
+    options.scene.model = preset.models;
+    options.scene.count = preset.count;
+    options.cull.lod = preset.lod;
+    options.cull.mode = preset.cull;
+    options.camera = preset.camera;
+}
+
+// --scene first, wherever it stands, so that every other flag overrides the preset.
+std::string sceneName(const std::vector<std::string>& args) {
+    std::string name = "default";
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--scene" && i + 1 < args.size()) name = args[i + 1];
+        else if (args[i].rfind("--scene=", 0) == 0) name = args[i].substr(8);
+    }
+    return name;
+}
+
+}  // namespace
+
 RenderOptions parseRenderOptions(const std::vector<std::string>& args, const ExtraFlagParser& extra) {
     RenderOptions options;
+    applyPreset(findScenePreset(sceneName(args)), options);
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string flag = args[i];
         std::string value;
@@ -80,7 +146,16 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         if (flag == "--help" || flag == "-h") options.help = true;
         else if (flag == "--list-devices") options.listDevices = true;
         else if (flag == "--validation") options.validation = true;
+        else if (flag == "--scene") next();  // applied first
         else if (flag == "--model") options.scene.model = next();
+        else if (flag == "--lod") options.cull.lod = parseOnOff(flag, next());
+        else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
+        else if (flag == "--lod-hysteresis") options.cull.hysteresis = parseNumber(flag, next(), 0.0f, 0.5f);
+        else if (flag == "--cull") {
+            const std::string mode = next();
+            if (!render::parseCullMode(mode, options.cull.mode))
+                throw gpu::Error("--cull: '" + mode + "' is not gpu, cpu or off");
+        }
         else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--clip") options.scene.clip = next();
         else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);

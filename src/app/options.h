@@ -8,13 +8,17 @@
 
 #include <vulkan/vulkan.h>
 
+#include "render/camera_path.h"
+#include "render/cull_pass.h"
 #include "skin/skinning_method.h"
 
 namespace app {
 
-// What a crowd is: model, size, clip, seed.
+// What a crowd is: models, size, clip, seed.
 struct SceneOptions {
-    std::string model = "soldier";  // "soldier", "horse"
+    std::string scene = "default";  // the preset the other values started from (app/scene_presets.h)
+    // "soldier", "horse" or a glTF file; several as NAME[:WEIGHT],... (each model's share of the crowd)
+    std::string model = "soldier";
     std::uint32_t count = 1024;
     std::string clip;               // name or index; "" = the model's default clip, "random" = one per character
     std::uint32_t seed = 1;
@@ -22,6 +26,8 @@ struct SceneOptions {
 
 struct RenderOptions {
     SceneOptions scene;
+    render::CullSettings cull;
+    render::CameraPath camera = render::CameraPath::Framed;
     skin::Method method = skin::Method::TwoPass;
     std::uint32_t frames = 30;
     VkExtent2D size{1280, 720};
@@ -43,6 +49,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
 // Strict parsers for flag values (whole string, no sign, within [min, max]); throw gpu::Error.
 std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t min, std::uint32_t max);
 VkExtent2D parseSize(const std::string& flag, const std::string& text);
+float parseNumber(const std::string& flag, const std::string& text, float min, float max);
 
 const char* renderUsage();
 

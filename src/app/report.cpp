@@ -22,22 +22,27 @@ double percentile(std::vector<double> values, double fraction) {
     return values[below] + (values[above] - values[below]) * (position - static_cast<double>(below));
 }
 
-RunSummary summarize(const std::vector<render::FrameStats>& stats, std::uint32_t warmup) {
+RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t warmup) {
     RunSummary summary;
     summary.frames = static_cast<std::uint32_t>(stats.size());
     // Never leave every frame out: a short run still reports its last frames.
     const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
-    std::vector<double> intervals, animate, record, total;
+    std::vector<double> intervals, animate, record, total, triangles;
+    std::vector<double> visible[LOD_COUNT];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
-        const render::FrameStats& frame = stats[i];
+        const frame::FrameStats& frame = stats[i];
         if (frame.intervalMs > 0.0) intervals.push_back(frame.intervalMs);
         animate.push_back(frame.animateMs);
         record.push_back(frame.recordMs);
         double sum = 0.0;
         for (const gpu::PassTime& pass : frame.gpu) passes[pass.pass].push_back(pass.milliseconds), sum += pass.milliseconds;
         total.push_back(sum);
+        for (int l = 0; l < LOD_COUNT; ++l) visible[l].push_back(frame.lods.characters[l]);
+        triangles.push_back(static_cast<double>(frame.lods.totalTriangles()));
     }
+    for (int l = 0; l < LOD_COUNT; ++l) summary.medianVisible[l] = median(visible[l]);
+    summary.medianTriangles = median(triangles);
     summary.measuredFrames = static_cast<std::uint32_t>(stats.size() - first);
     summary.medianFrameMs = median(intervals);
     summary.p95FrameMs = percentile(intervals, 0.95);
@@ -50,8 +55,10 @@ RunSummary summarize(const std::vector<render::FrameStats>& stats, std::uint32_t
 }
 
 void printSummary(const RunSummary& s) {
-    std::printf("%s x %u, %s, %u frames (%u measured) on %s (%s)\n", s.model.c_str(), s.characters, s.method.c_str(),
-                s.frames, s.measuredFrames, s.device.c_str(), s.driver.c_str());
+    std::printf("%s: %s x %u, %s, %u frames (%u measured) on %s (%s)\n", s.scene.c_str(), s.model.c_str(),
+                s.characters, s.method.c_str(), s.frames, s.measuredFrames, s.device.c_str(), s.driver.c_str());
+    std::printf("  drawn: %.0f / %.0f / %.0f characters at LOD 0 / 1 / 2, %.2f M triangles  [culling %s]\n",
+                s.medianVisible[0], s.medianVisible[1], s.medianVisible[2], s.medianTriangles / 1e6, s.culling.c_str());
     std::printf("  frame: median %.3f ms (%.1f fps), p95 %.3f ms  [wall clock between frame starts]\n",
                 s.medianFrameMs, s.fps, s.p95FrameMs);
     std::printf("  cpu:   animate %.3f ms, record+submit %.3f ms\n", s.medianAnimateMs, s.medianRecordMs);
@@ -62,7 +69,11 @@ void printSummary(const RunSummary& s) {
 
 void writeJson(const std::string& path, const RunSummary& s) {
     nlohmann::json json;
+    json["scene"] = s.scene;
     json["model"] = s.model;
+    json["culling"] = s.culling;
+    json["median_visible_per_lod"] = {s.medianVisible[0], s.medianVisible[1], s.medianVisible[2]};
+    json["median_triangles"] = s.medianTriangles;
     json["method"] = s.method;
     json["characters"] = s.characters;
     json["frames"] = s.frames;

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 #include "skin/skinning_method.h"
 
 namespace gpu { class VulkanContext; }
@@ -12,9 +12,14 @@ namespace gpu { class VulkanContext; }
 namespace app {
 
 struct RunSummary {
+    std::string scene;
     std::string model;
     std::string method;
+    std::string culling;  // "gpu", "cpu", "off", with "LOD on/off"
     std::uint32_t characters = 0;
+    // Medians over the measured frames: visible characters per level of detail, triangles drawn.
+    double medianVisible[LOD_COUNT] = {};
+    double medianTriangles = 0.0;
     std::uint32_t frames = 0;
     std::uint32_t measuredFrames = 0;
     double medianFrameMs = 0.0;   // wall clock between frame starts, after warm-up
@@ -34,7 +39,7 @@ double median(std::vector<double> values);
 double percentile(std::vector<double> values, double fraction);
 
 // Frames before `warmup` are left out of every median.
-RunSummary summarize(const std::vector<render::FrameStats>& stats, std::uint32_t warmup);
+RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t warmup);
 
 void printSummary(const RunSummary& summary);
 // Throws gpu::Error naming the path when it cannot be written.

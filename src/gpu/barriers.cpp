@@ -39,3 +39,19 @@ void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, Access before, Access a
 }
 
 }  // namespace gpu
+
+namespace gpu {
+
+void memoryBarrier(VkCommandBuffer cmd, Access before, Access after) {
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = before.stage;
+    barrier.srcAccessMask = before.access;
+    barrier.dstStageMask = after.stage;
+    barrier.dstAccessMask = after.access;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+}  // namespace gpu

@@ -15,3 +15,9 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
 void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, Access before, Access after);
 
 }  // namespace gpu
+
+namespace gpu {
+// A global memory barrier: for passes that hand several buffers to the next (culling's lists,
+// counts and indirect commands), one barrier says it all.
+void memoryBarrier(VkCommandBuffer cmd, Access before, Access after);
+}  // namespace gpu

@@ -216,7 +216,8 @@ void VulkanContext::createDevice(const ContextOptions& options) {
     if (families[queueFamily].timestampValidBits > 0) timestampPeriodNs_ = properties.limits.timestampPeriod;
 
     VkPhysicalDeviceVulkan11Features supported11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
-    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &supported11};
+    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &supported11};
+    VkPhysicalDeviceVulkan13Features supported13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &supported12};
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported13};
     vkGetPhysicalDeviceFeatures2(physicalDevice, &supported);
     if (!supported13.dynamicRendering || !supported13.synchronization2)
@@ -224,19 +225,26 @@ void VulkanContext::createDevice(const ContextOptions& options) {
     // Pass 2 finds a vertex's texture coordinates from gl_VertexIndex - gl_BaseVertex.
     if (!supported11.shaderDrawParameters)
         throw Error("device " + description.name + " lacks shaderDrawParameters");
-    multiDrawIndirect = supported.features.multiDrawIndirect;
+    // The GPU-driven frame: culling writes indirect draws with their count, a first instance that names
+    // the character, several draws per call.
+    const VkPhysicalDeviceFeatures& core = supported.features;
+    if (!supported12.drawIndirectCount || !core.multiDrawIndirect || !core.drawIndirectFirstInstance)
+        throw Error("device " + description.name +
+                    " lacks drawIndirectCount, multiDrawIndirect or drawIndirectFirstInstance");
+    multiDrawIndirect = true;
     fragmentStores = supported.features.fragmentStoresAndAtomics;
 
     VkPhysicalDeviceVulkan11Features enabled11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
     enabled11.shaderDrawParameters = VK_TRUE;
-    VkPhysicalDeviceVulkan13Features enabled13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &enabled11};
+    VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &enabled11};
+    enabled12.drawIndirectCount = VK_TRUE;
+    VkPhysicalDeviceVulkan13Features enabled13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &enabled12};
     enabled13.dynamicRendering = VK_TRUE;
     enabled13.synchronization2 = VK_TRUE;
     VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &enabled13};
-    enabled.features.multiDrawIndirect = supported.features.multiDrawIndirect;
-    enabled.features.drawIndirectFirstInstance = supported.features.drawIndirectFirstInstance;
+    enabled.features.multiDrawIndirect = VK_TRUE;
+    enabled.features.drawIndirectFirstInstance = VK_TRUE;
     enabled.features.fragmentStoresAndAtomics = supported.features.fragmentStoresAndAtomics;
-    if (!supported.features.drawIndirectFirstInstance) multiDrawIndirect = false;
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

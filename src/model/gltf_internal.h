@@ -100,7 +100,7 @@ struct Palette {
     int texCoord = 0;  // the TEXCOORD_n set it uses
 };
 
-// The palette entry of a material, adding it on first use. Materials beyond MAX_MATERIALS share the
+// The palette entry of a material, adding it on first use. Materials beyond MAX_MODEL_MATERIALS share the
 // nearest colour already present (with a note).
 std::uint32_t paletteEntry(const tinygltf::Model& model, int material, Palette& palette,
                            std::vector<std::string>& notes);

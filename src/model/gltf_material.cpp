@@ -90,18 +90,18 @@ std::uint32_t paletteEntry(const tinygltf::Model& model, int material, Palette& 
     }
 
     std::uint32_t entry = 0;
-    if (palette.colors.size() < MAX_MATERIALS) {
+    if (palette.colors.size() < MAX_MODEL_MATERIALS) {
         entry = static_cast<std::uint32_t>(palette.colors.size());
         palette.colors.push_back(color);
         if (textured) palette.texturedEntries |= 1u << entry;
     } else {
-        // The GPU palette has MAX_MATERIALS entries: share the nearest colour.
+        // The GPU palette has MAX_MODEL_MATERIALS entries: share the nearest colour.
         float best = std::numeric_limits<float>::max();
         for (std::size_t i = 0; i < palette.colors.size(); ++i) {
             const glm::vec4 d = palette.colors[i] - color;
             if (glm::dot(d, d) < best) best = glm::dot(d, d), entry = static_cast<std::uint32_t>(i);
         }
-        notes.push_back("more than " + std::to_string(MAX_MATERIALS) + " materials: material " +
+        notes.push_back("more than " + std::to_string(MAX_MODEL_MATERIALS) + " materials: material " +
                         std::to_string(material) + " shares the nearest colour");
     }
     palette.entryOfMaterial[material] = entry;

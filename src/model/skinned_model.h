@@ -20,7 +20,7 @@ struct SkinnedModel {
     // Triangle list, counter-clockwise when seen from outside.
     std::vector<std::uint32_t> indices;
     std::vector<anim::Clip> clips;
-    // Colour per material index (SkinVertex::normal.w); at most MAX_MATERIALS.
+    // Colour per material index (SkinVertex::normal.w); at most MAX_MODEL_MATERIALS.
     std::vector<glm::vec4> materialColors;
     // Texture coordinates per vertex (glTF convention: origin at the image's top left); empty when the
     // model has none. Only the glTF loader fills them; the built-in models are flat-coloured.

@@ -1,6 +1,8 @@
 #include "render/crowd_buffers.h"
 
+#include <algorithm>
 #include <numeric>
+#include <string>
 
 #include "gpu/barriers.h"
 #include "gpu/vulkan_context.h"
@@ -16,25 +18,46 @@ std::uint32_t boneStrideFor(const gpu::VulkanContext& context, std::uint32_t joi
     return static_cast<std::uint32_t>(bytes / sizeof(gpu::BoneRows));
 }
 
-CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                           std::uint32_t characterCount, std::uint32_t framesInFlight)
-    : context_(context),
-      vertexCount_(static_cast<std::uint32_t>(model.vertices.size())),
-      indexCount_(static_cast<std::uint32_t>(model.indices.size())),
-      jointCount_(static_cast<std::uint32_t>(model.skeleton.jointCount())),
-      characterCount_(characterCount),
-      boneStride_(boneStrideFor(context, jointCount_)) {
-    const VkDeviceSize boneBytes = static_cast<VkDeviceSize>(characterCount) * boneStride_ * sizeof(gpu::BoneRows);
-    if (boneBytes > context.properties.limits.maxStorageBufferRange)
-        throw gpu::Error("--count " + std::to_string(characterCount) + ": bone matrices need " +
+BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd) {
+    std::vector<std::uint32_t> strides;
+    for (const model::SkinnedModel* m : crowd.models())
+        strides.push_back(boneStrideFor(context, static_cast<std::uint32_t>(m->skeleton.jointCount())));
+    BoneLayout layout;
+    layout.largestBlock = *std::max_element(strides.begin(), strides.end());
+    layout.offsets.reserve(crowd.size());
+    std::uint64_t rows = 0;
+    for (const crowd::Character& c : crowd.characters()) {
+        layout.offsets.push_back(static_cast<std::uint32_t>(std::min<std::uint64_t>(rows, UINT32_MAX)));
+        rows += strides[c.model];
+    }
+    layout.totalRows = rows + layout.largestBlock;
+    return layout;
+}
+
+std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, std::span<const std::uint32_t> boneOffsets) {
+    std::vector<gpu::CharacterRecord> records(crowd.size());
+    std::vector<std::uint32_t> ranks(crowd.models().size(), 0);
+    for (std::uint32_t i = 0; i < crowd.size(); ++i) {
+        const crowd::Character& c = crowd.characters()[i];
+        records[i].placement = glm::vec4(c.position, c.heading);
+        records[i].tint = glm::vec4(c.tint, c.scale);
+        records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, 0u);
+    }
+    return records;
+}
+
+CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t framesInFlight)
+    : context_(context), layout_(planBones(context, crowd)) {
+    const VkDeviceSize boneBytes = layout_.bytes();
+    // Offsets are 32-bit BoneRows indices in the shaders; the storage range bounds what one binding sees.
+    if (boneBytes > context.properties.limits.maxStorageBufferRange || layout_.totalRows > UINT32_MAX)
+        throw gpu::Error("--count " + std::to_string(crowd.size()) + ": bone matrices need " +
                          gpu::formatBytes(boneBytes) + ", over this device's storage-buffer limit of " +
                          gpu::formatBytes(context.properties.limits.maxStorageBufferRange));
+    records_ = characterRecords(crowd, layout_.offsets);
     try {
-        bindVertices_ = gpu::createBufferWithData(context, std::as_bytes(std::span(model.vertices)),
-                                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                                  "bind-pose vertices");
-        indices_ = gpu::createBufferWithData(context, std::as_bytes(std::span(model.indices)),
-                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "indices");
+        characters_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),
+                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "character records");
         bones_ = gpu::createBuffer(context, boneBytes,
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -54,13 +77,11 @@ void CrowdBuffers::release() {
     for (gpu::Buffer& b : boneStaging_) gpu::destroyBuffer(context_, b);
     boneStaging_.clear();
     gpu::destroyBuffer(context_, bones_);
-    gpu::destroyBuffer(context_, indices_);
-    gpu::destroyBuffer(context_, bindVertices_);
+    gpu::destroyBuffer(context_, characters_);
 }
 
 std::span<gpu::BoneRows> CrowdBuffers::boneStaging(std::uint32_t frameSlot) {
-    return {static_cast<gpu::BoneRows*>(boneStaging_[frameSlot].mapped),
-            static_cast<std::size_t>(characterCount_) * boneStride_};
+    return {static_cast<gpu::BoneRows*>(boneStaging_[frameSlot].mapped), static_cast<std::size_t>(layout_.totalRows)};
 }
 
 void CrowdBuffers::recordBoneUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) const {

@@ -1,27 +1,28 @@
 #include "render/scene_pass.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include "ground.frag.spv.h"
 #include "ground.vert.spv.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
-#include "render/material_texture.h"
+#include "render/geometry_pool.h"
 #include "render/render_target.h"
 
 namespace render {
 
-ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const MaterialTexture& material)
+ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool)
     : context_(context) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[3] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
-        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_TEXTURES, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
     setLayout_ = gpu::createSetLayout(context, bindings);
     const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
-                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, framesInFlight},
+                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, framesInFlight * MAX_TEXTURES},
                                            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight}};
     pool_ = gpu::createDescriptorPool(context, sizes, framesInFlight);
     for (std::uint32_t i = 0; i < framesInFlight; ++i) {
@@ -30,9 +31,9 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         sets_.push_back(gpu::allocateSet(context, pool_, setLayout_));
         gpu::writeBufferDescriptor(context, sets_.back(), 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                    uniforms_.back().buffer, 0, sizeof(gpu::SceneUniforms));
-        writeMaterial(sets_.back(), material);
-        gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, material.uvs().buffer,
-                                   0, VK_WHOLE_SIZE);
+        writeTextures(sets_.back(), pool);
+        gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                   pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
     }
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ScenePush)};
     groundLayout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
@@ -54,14 +55,17 @@ ScenePass::~ScenePass() {
     vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
 }
 
-void ScenePass::writeMaterial(VkDescriptorSet set, const MaterialTexture& material) const {
-    const VkDescriptorImageInfo image{material.sampler(), material.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+void ScenePass::writeTextures(VkDescriptorSet set, const GeometryPool& pool) const {
+    std::array<VkDescriptorImageInfo, MAX_TEXTURES> images;
+    const std::array<VkImageView, MAX_TEXTURES> views = pool.textures().views();
+    for (std::size_t i = 0; i < images.size(); ++i)
+        images[i] = {pool.textures().sampler(), views[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = set;
     write.dstBinding = 1;
-    write.descriptorCount = 1;
+    write.descriptorCount = MAX_TEXTURES;
     write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &image;
+    write.pImageInfo = images.data();
     vkUpdateDescriptorSets(context_.device, 1, &write, 0, nullptr);
 }
 
@@ -78,9 +82,9 @@ void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const
 }
 
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     std::uint32_t texturedMaterials, float fogDensity) {
+                                     const glm::uvec4& texturedMaterials, float fogDensity) {
     gpu::SceneUniforms u{};
-    u.materialFlags = glm::uvec4(texturedMaterials, 0, 0, 0);
+    u.materialFlags = texturedMaterials;
     u.viewProjection = viewProjection;
     u.lightDirection = glm::vec4(glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f)), 0.35f);
     u.skyColor = glm::vec4(kSkyColor, fogDensity);

@@ -14,7 +14,7 @@ namespace gpu { class VulkanContext; }
 
 namespace render {
 
-class MaterialTexture;
+class GeometryPool;
 
 // The clear colour behind everything and the colour distant things fade into (linear RGB).
 inline constexpr glm::vec3 kSkyColor{0.55f, 0.7f, 0.9f};
@@ -27,7 +27,7 @@ struct ScenePush {
 
 class ScenePass {
 public:
-    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const MaterialTexture& material);
+    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool);
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;
@@ -38,7 +38,7 @@ public:
     void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
 
 private:
-    void writeMaterial(VkDescriptorSet set, const MaterialTexture& material) const;
+    void writeTextures(VkDescriptorSet set, const GeometryPool& pool) const;
 
     const gpu::VulkanContext& context_;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
@@ -49,8 +49,8 @@ private:
     VkPipeline groundPipeline_ = VK_NULL_HANDLE;
 };
 
-// Scene uniforms for a camera and a model's palette: sun from the upper left, pale sky, grass.
+// Scene uniforms for a camera and the pooled palette: sun from the upper left, pale sky, grass.
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     std::uint32_t texturedMaterials, float fogDensity);
+                                     const glm::uvec4& texturedMaterials, float fogDensity);
 
 }  // namespace render

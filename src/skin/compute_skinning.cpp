@@ -1,87 +1,116 @@
 #include "skin/compute_skinning.h"
 
 #include <algorithm>
-#include <array>
 
 #include "gpu/gpu_timer.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "render/crowd_buffers.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
 #include "skin.comp.spv.h"
 
 namespace skin {
 namespace {
 
-constexpr std::uint32_t kWorkgroupSize = 64;  // WORKGROUP_SIZE in skin.comp.glsl
-
-// Characters per workgroup: each reuses the thread's bind-pose vertex, but all their bones must
-// fit the shared memory (kept under 16 KiB so several workgroups share a multiprocessor).
-std::uint32_t charactersPerGroup(const gpu::VulkanContext& context, std::uint32_t joints) {
-    const std::uint32_t budget = std::min<std::uint32_t>(16384, context.properties.limits.maxComputeSharedMemorySize);
-    const std::uint32_t perCharacter = joints * static_cast<std::uint32_t>(sizeof(gpu::BoneRows));
-    if (perCharacter > context.properties.limits.maxComputeSharedMemorySize)
-        throw gpu::Error("compute: " + std::to_string(joints) + " joints do not fit in shared memory");
-    return std::clamp<std::uint32_t>(budget / perCharacter, 1, 8);
+// Every character of each bucket's model in rank order, at the bucket's place in the list: the
+// static method skins them all once.
+std::vector<std::uint32_t> everyCharacterList(const render::CrowdBuffers& crowd, const render::DrawLists& lists) {
+    std::vector<std::uint32_t> list(static_cast<std::size_t>(crowd.characterCount()) * LOD_COUNT + 1, 0u);
+    for (std::uint32_t c = 0; c < crowd.characterCount(); ++c) {
+        const gpu::CharacterRecord& record = crowd.records()[c];
+        for (std::uint32_t l = 0; l < LOD_COUNT; ++l)
+            list[lists.buckets()[record.ids.x * LOD_COUNT + l].list.z + record.ids.z] = c;
+    }
+    return list;
 }
-
 
 }  // namespace
 
-ComputeSkinning::ComputeSkinning(const MethodSetup& setup, bool once)
-    : context_(setup.context),
-      crowd_(setup.crowd),
-      once_(once),
-      charactersPerGroup_(charactersPerGroup(setup.context, setup.crowd.jointCount())),
-      skinned_(context_, crowd_.characterCount(), crowd_.vertexCount(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT),
-      descriptors_(context_, VK_SHADER_STAGE_COMPUTE_BIT, skinningBindings(crowd_, skinned_)),
-      draw_(setup, crowd_.vertexCount()) {
-    const VkDescriptorSetLayout setLayout = descriptors_.layout();
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::SkinPassParams)};
-    pipelineLayout_ = gpu::createPipelineLayout(context_, {&setLayout, 1}, {&push, 1});
-    const std::uint32_t constants[2] = {charactersPerGroup_, crowd_.jointCount()};
-    pipeline_ = gpu::createComputePipeline(context_, skin_comp_spv, pipelineLayout_, constants);
+ComputeSkinning::ComputeSkinning(const MethodSetup& setup, Every every)
+    : context_(setup.context), lists_(setup.lists), every_(every) {
+    try {
+        skinned_ = std::make_unique<SkinnedVertexBuffer>(
+            context_, once() ? lists_.fixedCapacity() : lists_.skinnedCapacity(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        VkBuffer list = lists_.visible().buffer;
+        if (once()) {
+            const std::vector<std::uint32_t> all = everyCharacterList(setup.crowd, lists_);
+            everyCharacter_ = gpu::createBufferWithData(context_, std::as_bytes(std::span(all)),
+                                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "every character (static)");
+            list = everyCharacter_.buffer;
+        }
+        constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const VkDeviceSize half = skinned_->streamBytes();
+        const gpu::BufferBinding bindings[] = {{storage, setup.pool.bindVertices().buffer},
+                                               {storage, setup.crowd.bones().buffer},
+                                               {storage, skinned_->buffer(), 0, half},
+                                               {storage, skinned_->buffer(), half, half},
+                                               {storage, setup.crowd.characters().buffer},
+                                               {storage, lists_.bucketRecords().buffer},
+                                               {storage, lists_.bucketFrames().buffer},
+                                               {storage, list}};
+        descriptors_ = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
+        const VkDescriptorSetLayout setLayout = descriptors_->layout();
+        const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::SkinPassParams)};
+        pipelineLayout_ = gpu::createPipelineLayout(context_, {&setLayout, 1}, {&push, 1});
+        for (const gpu::ModelRecord& model : setup.pool.models()) {
+            const std::uint32_t constants[2] = {render::skinningCharactersPerGroup(context_, model.info.y), model.info.y};
+            pipelines_.push_back(gpu::createComputePipeline(context_, skin_comp_spv, pipelineLayout_, constants));
+        }
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-ComputeSkinning::~ComputeSkinning() {
-    vkDestroyPipeline(context_.device, pipeline_, nullptr);
-    vkDestroyPipelineLayout(context_.device, pipelineLayout_, nullptr);
+ComputeSkinning::~ComputeSkinning() { release(); }
+
+void ComputeSkinning::release() {
+    for (VkPipeline pipeline : pipelines_) vkDestroyPipeline(context_.device, pipeline, nullptr);
+    pipelines_.clear();
+    if (pipelineLayout_) vkDestroyPipelineLayout(context_.device, pipelineLayout_, nullptr);
+    pipelineLayout_ = VK_NULL_HANDLE;
+    descriptors_.reset();
+    gpu::destroyBuffer(context_, everyCharacter_);
+    skinned_.reset();
 }
 
 void ComputeSkinning::recordDispatches(VkCommandBuffer cmd) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    const VkDescriptorSet set = descriptors_.set();
+    const VkDescriptorSet set = descriptors_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1, &set, 0, nullptr);
-    const std::uint32_t groupsX = (crowd_.vertexCount() + kWorkgroupSize - 1) / kWorkgroupSize;
-    // The y dimension of a dispatch is limited (65,535 groups on many devices): large crowds take several.
-    const std::uint32_t maxGroupsY = context_.properties.limits.maxComputeWorkGroupCount[1];
-    const std::uint32_t perDispatch = maxGroupsY * charactersPerGroup_;
-    for (std::uint32_t first = 0; first < crowd_.characterCount(); first += perDispatch) {
-        const std::uint32_t count = std::min(perDispatch, crowd_.characterCount() - first);
+    const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
+    for (std::uint32_t b = 0; b < lists_.bucketCount(); ++b) {
+        const gpu::BucketRecord& bucket = lists_.buckets()[b];
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[bucket.list.x]);
         gpu::SkinPassParams params{};
-        params.counts = {count, crowd_.vertexCount(), 1, first};
-        params.strides = {crowd_.vertexCount(), crowd_.boneStride(), 0, 0};
+        params.bucket = glm::uvec4(b, once() ? 1u : 0u, 0u, 0u);
         vkCmdPushConstants(cmd, pipelineLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);
-        vkCmdDispatch(cmd, groupsX, (count + charactersPerGroup_ - 1) / charactersPerGroup_, 1);
+        if (once()) {
+            // Every character of the model: the CPU knows the counts.
+            if (bucket.list.w == 0) continue;
+            const std::uint32_t groups = (bucket.list.w + bucket.fixedLayout.y - 1) / bucket.fixedLayout.y;
+            vkCmdDispatch(cmd, std::min(groups, maxGroups), (bucket.mesh.z + CULL_WORKGROUP_SIZE - 1) / CULL_WORKGROUP_SIZE, 1);
+        } else {
+            vkCmdDispatchIndirect(cmd, lists_.skinDispatches().buffer, b * sizeof(glm::uvec4));
+        }
     }
 }
 
 void ComputeSkinning::recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) {
-    if (once_ && skinnedOnce_) return;  // the ceiling: vertices stay as the first frame left them
+    if (once() && skinnedOnce_) return;  // the ceiling: vertices stay as the first frame left them
     const gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-    skinned_.barrierBeforeWrite(cmd, computeWrite);
+    skinned_->barrierBeforeWrite(cmd, computeWrite);
     recordDispatches(cmd);
-    skinned_.barrierAfterWrite(cmd, computeWrite);
+    skinned_->barrierAfterWrite(cmd, computeWrite);
     timer.mark(cmd, "skin");
     skinnedOnce_ = true;
 }
 
-void ComputeSkinning::recordDraw(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const render::ScenePush& push) {
-    draw_.record(cmd, sceneSet, push, skinned_.vertices());
-}
-
 std::vector<MemoryItem> ComputeSkinning::memory() const {
-    return {{"skinned vertex buffer", skinned_.bytes()}, {"draw commands", draw_.indirectBytes()}};
+    std::vector<MemoryItem> items = {{"skinned vertex buffer", skinned_->bytes()}};
+    if (once()) items.push_back({"every-character list", everyCharacter_.size});
+    return items;
 }
 
 }  // namespace skin

@@ -1,11 +1,14 @@
 #pragma once
-// "compute": skinning in a compute shader straight into pass 2's vertex buffer (no image, no copy).
-// With `once`, it skins only on the first frame and never again: the "static" ceiling, which draws
-// the same crowd with no skinning work so every method's skinning cost is a ratio in the same run.
+// "compute": skinning in a compute shader straight into the draw pass's vertex buffer (no image, no
+// copy), one indirect dispatch per (model, LOD) bucket over the characters culling kept.
+// Every::CharacterOnce is the "static" ceiling: on its first frame it skins every character at every
+// LOD into its own slot, then never again, so the frame is culling and drawing alone and every
+// method's skinning cost is a ratio in the same run.
 #include <memory>
+#include <vector>
 
+#include "gpu/buffer.h"
 #include "gpu/descriptor_bundle.h"
-#include "skin/skinned_draw.h"
 #include "skin/skinned_vertex_buffer.h"
 #include "skin/skinning_method.h"
 
@@ -13,29 +16,31 @@ namespace skin {
 
 class ComputeSkinning final : public SkinningMethod {
 public:
-    ComputeSkinning(const MethodSetup& setup, bool once);
+    enum class Every { Frame, CharacterOnce };
+    ComputeSkinning(const MethodSetup& setup, Every every);
     ~ComputeSkinning() override;
 
-    Method method() const override { return once_ ? Method::Static : Method::Compute; }
+    Method method() const override { return once() ? Method::Static : Method::Compute; }
     void recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) override;
-    void recordDraw(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const render::ScenePush& push) override;
     std::vector<MemoryItem> memory() const override;
-    SkinnedVertices skinnedVertices() const override { return skinned_.vertices(); }
-    bool needsAnimation() const override { return !(once_ && skinnedOnce_); }
+    render::SkinnedVertices skinnedVertices() const override { return skinned_->vertices(); }
+    bool needsAnimation() const override { return !(once() && skinnedOnce_); }
+    bool fixedLayout() const override { return once(); }
 
 private:
+    bool once() const { return every_ == Every::CharacterOnce; }
     void recordDispatches(VkCommandBuffer cmd);
+    void release();
 
     const gpu::VulkanContext& context_;
-    const render::CrowdBuffers& crowd_;
-    bool once_;
+    const render::DrawLists& lists_;
+    Every every_;
     bool skinnedOnce_ = false;
-    std::uint32_t charactersPerGroup_;
-    SkinnedVertexBuffer skinned_;
-    gpu::DescriptorBundle descriptors_;
+    std::unique_ptr<SkinnedVertexBuffer> skinned_;
+    gpu::Buffer everyCharacter_;  // the fixed layout's list: every character of each bucket's model
+    std::unique_ptr<gpu::DescriptorBundle> descriptors_;
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
-    SkinnedDraw draw_;
+    std::vector<VkPipeline> pipelines_;  // per model: its joint count and characters per group
 };
 
 }  // namespace skin

@@ -1,14 +1,16 @@
 #pragma once
-// The paper's two-pass method. Pass 1 skins every (character, vertex) in a fragment shader into
-// RGBA32F position and normal targets; vkCmdCopyImageToBuffer turns them into a vertex buffer;
-// pass 2 (SkinnedDraw) draws it with the model's index buffer.
+// The paper's two-pass method. Pass 1 skins every visible (character, vertex) in a fragment shader
+// into RGBA32F position and normal targets; vkCmdCopyImageToBuffer turns them into the vertex buffer
+// the draw pass binds.
+//
+// The copy is sized conservatively: vkCmdCopyImageToBuffer has no indirect form, and only the GPU
+// knows this frame's visible count, so every frame copies the whole targets (every character at
+// LOD 0), while pass 1 shades only the visible characters' texels.
 #include <memory>
 #include <vector>
 
-#include "gpu/descriptor_bundle.h"
 #include "gpu/image.h"
-#include "skin/skin_target_layout.h"
-#include "skin/skinned_draw.h"
+#include "skin/fragment_skin_pass.h"
 #include "skin/skinned_vertex_buffer.h"
 #include "skin/skinning_method.h"
 
@@ -21,30 +23,23 @@ public:
 
     Method method() const override { return Method::TwoPass; }
     void recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) override;
-    void recordDraw(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const render::ScenePush& push) override;
     std::vector<MemoryItem> memory() const override;
-    SkinnedVertices skinnedVertices() const override;
-    const SkinTargetLayout& layout() const { return layout_; }
+    render::SkinnedVertices skinnedVertices() const override { return skinned_->vertices(); }
+    const SkinTargetLayout& layout() const { return pass_->layout(); }
 
 private:
     struct Tile {
         gpu::Image position;
         gpu::Image normal;
     };
-    void createPipeline();
     void recordTile(VkCommandBuffer cmd, std::uint32_t tile);
     void recordCopies(VkCommandBuffer cmd);
     void release();
 
     const gpu::VulkanContext& context_;
-    const render::CrowdBuffers& crowd_;
-    SkinTargetLayout layout_;
-    std::vector<Tile> tiles_;
     std::unique_ptr<SkinnedVertexBuffer> skinned_;
-    std::unique_ptr<gpu::DescriptorBundle> descriptors_;
-    VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
-    std::unique_ptr<SkinnedDraw> draw_;
+    std::unique_ptr<FragmentSkinPass> pass_;
+    std::vector<Tile> tiles_;
 };
 
 }  // namespace skin

@@ -7,36 +7,19 @@
 
 namespace skin {
 
-std::uint32_t SkinTargetLayout::charactersInTile(std::uint32_t tile) const {
-    return std::min(charactersPerTile, characterCount - firstCharacter(tile));
-}
-
 VkExtent2D SkinTargetLayout::tileExtent(std::uint32_t tile) const {
-    return {width, charactersInTile(tile) * rowsPerCharacter};
+    return {width, std::min(rowsPerTile, totalRows - firstRow(tile))};
 }
 
-SkinTargetLayout planSkinTargets(std::uint32_t vertexCount, std::uint32_t characterCount, std::uint32_t maxDimension) {
-    if (vertexCount == 0 || characterCount == 0 || maxDimension == 0)
-        throw gpu::Error("skinning target: vertex count, character count and image size must be positive");
+SkinTargetLayout planSkinTargets(std::uint64_t capacity, std::uint32_t maxDimension) {
+    if (maxDimension == 0) throw gpu::Error("skinning target: the image size limit must be positive");
     SkinTargetLayout layout;
-    layout.vertexCount = vertexCount;
-    layout.characterCount = characterCount;
-    layout.width = std::min(vertexCount, maxDimension);
-    layout.rowsPerCharacter = (vertexCount + layout.width - 1) / layout.width;
-    if (layout.rowsPerCharacter > maxDimension)
-        throw gpu::Error("model has " + std::to_string(vertexCount) + " vertices, more than one " +
-                         std::to_string(maxDimension) + "-texel-square skinning target holds");
-    layout.charactersPerTile = std::min(characterCount, maxDimension / layout.rowsPerCharacter);
-    layout.tileCount = (characterCount + layout.charactersPerTile - 1) / layout.charactersPerTile;
+    layout.capacity = std::max<std::uint64_t>(capacity, 1);
+    layout.width = std::min(kPreferredTargetWidth, maxDimension);
+    layout.totalRows = static_cast<std::uint32_t>((layout.capacity + layout.width - 1) / layout.width);
+    layout.rowsPerTile = std::min(layout.totalRows, maxDimension);
+    layout.tileCount = (layout.totalRows + layout.rowsPerTile - 1) / layout.rowsPerTile;
     return layout;
-}
-
-gpu::SkinPassParams skinPassParams(const SkinTargetLayout& layout, std::uint32_t tile, std::uint32_t boneStride) {
-    gpu::SkinPassParams params{};
-    params.counts = {layout.charactersInTile(tile), layout.vertexCount, layout.rowsPerCharacter,
-                     layout.firstCharacter(tile)};
-    params.strides = {layout.width, boneStride, 0, 0};
-    return params;
 }
 
 std::uint32_t maxSkinTargetDimension(const gpu::VulkanContext& context, std::uint32_t requested) {

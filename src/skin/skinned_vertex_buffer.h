@@ -1,6 +1,7 @@
 #pragma once
-// Pass 2's vertex buffer for the methods that skin before drawing: every character's skinned
-// world-space positions (RGBA32F), then every character's normals (xyz + material index).
+// The skinned vertices a method produces for the draw pass: every skinned vertex's world-space
+// position (RGBA32F), then every normal (xyz + pooled material index), in the slots culling assigned
+// (render/draw_lists.h).
 #include <array>
 #include <cstdint>
 
@@ -9,20 +10,22 @@
 #include "gpu/barriers.h"
 #include "gpu/buffer.h"
 #include "gpu/descriptor_bundle.h"
-#include "skin/skinning_method.h"
+#include "render/character_draw.h"
 
 namespace skin {
 
 class SkinnedVertexBuffer {
 public:
     // `writerUsage`: how the skinning pass writes it (TRANSFER_DST for copies, STORAGE_BUFFER for shaders).
-    SkinnedVertexBuffer(const gpu::VulkanContext& context, std::uint32_t characterCount, std::uint32_t characterStride,
-                        VkBufferUsageFlags writerUsage);
+    // Throws gpu::Error when `capacity` vertices cannot be addressed by a draw's 32-bit vertexOffset.
+    SkinnedVertexBuffer(const gpu::VulkanContext& context, std::uint64_t capacity, VkBufferUsageFlags writerUsage);
     ~SkinnedVertexBuffer();
     SkinnedVertexBuffer(const SkinnedVertexBuffer&) = delete;
     SkinnedVertexBuffer& operator=(const SkinnedVertexBuffer&) = delete;
 
-    SkinnedVertices vertices() const { return {&buffer_, streamBytes(), characterStride_}; }
+    static std::uint64_t bytesFor(std::uint64_t capacity) { return capacity * 2 * sizeof(glm::vec4); }
+
+    render::SkinnedVertices vertices() const { return {&buffer_, streamBytes()}; }
     VkBuffer buffer() const { return buffer_.buffer; }
     VkDeviceSize streamBytes() const { return buffer_.size / 2; }
     VkDeviceSize bytes() const { return buffer_.size; }
@@ -35,11 +38,6 @@ public:
 private:
     const gpu::VulkanContext& context_;
     gpu::Buffer buffer_;
-    std::uint32_t characterStride_;
 };
-
-// The storage bindings of a skinning shader that writes this buffer: bind-pose vertices, bones,
-// positions, normals (the last two are the buffer's two halves).
-std::array<gpu::BufferBinding, 4> skinningBindings(const render::CrowdBuffers& crowd, const SkinnedVertexBuffer& skinned);
 
 }  // namespace skin

@@ -3,8 +3,8 @@
 #include "skin/compute_skinning.h"
 #include "skin/direct_fragment_skinning.h"
 #include "skin/fragment_skinning.h"
-#include "skin/instanced_vertex_skinning.h"
 #include "skin/skin_target_layout.h"
+#include "skin/skinned_vertex_buffer.h"
 #include "skin/vertex_shader_skinning.h"
 
 namespace skin {
@@ -34,34 +34,31 @@ bool parseMethod(const std::string& name, Method& method) {
 
 std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const MethodSetup& setup) {
     switch (method) {
-        case Method::VertexShader: return std::make_unique<VertexShaderSkinning>(setup);
-        case Method::VertexShaderInstanced: return std::make_unique<InstancedVertexSkinning>(setup);
+        case Method::VertexShader: return std::make_unique<VertexShaderSkinning>(false);
+        case Method::VertexShaderInstanced: return std::make_unique<VertexShaderSkinning>(true);
         case Method::TwoPass: return std::make_unique<FragmentSkinning>(setup);
         case Method::TwoPassDirect: return std::make_unique<DirectFragmentSkinning>(setup);
-        case Method::Compute: return std::make_unique<ComputeSkinning>(setup, false);
-        case Method::Static: return std::make_unique<ComputeSkinning>(setup, true);
+        case Method::Compute: return std::make_unique<ComputeSkinning>(setup, ComputeSkinning::Every::Frame);
+        case Method::Static: return std::make_unique<ComputeSkinning>(setup, ComputeSkinning::Every::CharacterOnce);
     }
     return nullptr;
 }
 
-std::uint64_t estimateMethodBytes(Method method, std::uint32_t vertexCount, std::uint32_t characterCount,
-                                  std::uint32_t maxTargetDimension) {
-    const std::uint64_t drawCommands = static_cast<std::uint64_t>(characterCount) * 20;
-    const std::uint64_t skinnedVertexBytes = 2 * 16;  // position and normal, RGBA32F each
+std::uint64_t estimateMethodBytes(Method method, std::uint64_t characters, std::uint64_t skinnedCapacity,
+                                  std::uint64_t fixedCapacity, std::uint32_t maxTargetDimension) {
     switch (method) {
         case Method::VertexShader:
         case Method::VertexShaderInstanced: return 0;
         case Method::Compute:
+        case Method::TwoPassDirect: return SkinnedVertexBuffer::bytesFor(skinnedCapacity);
         case Method::Static:
-            return static_cast<std::uint64_t>(vertexCount) * characterCount * skinnedVertexBytes + drawCommands;
+            // the fixed layout, and a list of every character per bucket
+            return SkinnedVertexBuffer::bytesFor(fixedCapacity) + characters * LOD_COUNT * 4;
         case Method::TwoPass:
-        case Method::TwoPassDirect: break;
+            return SkinnedVertexBuffer::bytesFor(skinnedCapacity) +
+                   planSkinTargets(skinnedCapacity, maxTargetDimension).bytes();
     }
-    const SkinTargetLayout layout = planSkinTargets(vertexCount, characterCount, maxTargetDimension);
-    const std::uint64_t texels = static_cast<std::uint64_t>(layout.characterStride()) * characterCount;
-    // two-pass: two RGBA32F targets plus the vertex buffer they are copied into.
-    const std::uint64_t images = method == Method::TwoPass ? texels * skinnedVertexBytes : 0;
-    return images + texels * skinnedVertexBytes + drawCommands;
+    return 0;
 }
 
 }  // namespace skin

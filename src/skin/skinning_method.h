@@ -1,6 +1,11 @@
 #pragma once
 // The interface every skinning method implements, so the renderer, the benchmark, the viewer and the
-// tests treat them alike: prepare resources for a crowd; record a frame; report what it allocated.
+// tests treat them alike: prepare resources for a crowd; record the skinning of a frame's visible
+// characters; say what it produced for the draw pass to consume; report what it allocated.
+//
+// A method *produces*: world-space vertices in a buffer (render::DrawInput::SkinnedVertices), laid
+// out as culling placed them (render/draw_lists.h), or nothing, when the draw skins the bind pose as
+// it goes (the vertex-shader methods). Drawing is not a method's business (render/character_draw.h).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -8,14 +13,17 @@
 
 #include <vulkan/vulkan.h>
 
-#include "render/scene_pass.h"
+#include "render/character_draw.h"
 
 namespace gpu {
 class VulkanContext;
 class GpuTimer;
-struct Buffer;
 }  // namespace gpu
-namespace render { class CrowdBuffers; }
+namespace render {
+class CrowdBuffers;
+class DrawLists;
+class GeometryPool;
+}  // namespace render
 
 namespace skin {
 
@@ -32,17 +40,11 @@ struct MemoryItem {
     std::uint64_t bytes;
 };
 
-// Where a method leaves the skinned world-space vertices (methods that skin while drawing leave none).
-struct SkinnedVertices {
-    const gpu::Buffer* buffer = nullptr;
-    VkDeviceSize normalsOffset = 0;       // bytes from the start of the buffer to the first normal
-    std::uint32_t characterStride = 0;    // vertices from one character's first vertex to the next's
-};
-
 struct MethodSetup {
     const gpu::VulkanContext& context;
+    const render::GeometryPool& pool;
     const render::CrowdBuffers& crowd;
-    VkDescriptorSetLayout sceneSetLayout;
+    const render::DrawLists& lists;
     // Largest skinning target side in texels; 0 uses the device limit (tests lower it to force tiling).
     std::uint32_t maxTargetDimension = 0;
 };
@@ -51,23 +53,27 @@ class SkinningMethod {
 public:
     virtual ~SkinningMethod() = default;
     virtual Method method() const = 0;
-    // Records the work that precedes the scene pass (skinning, copies), marking each pass on the timer.
-    virtual void recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) = 0;
-    // Records the characters' draws inside the scene pass.
-    virtual void recordDraw(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const render::ScenePush& push) = 0;
-    // Buffers and images this method allocated for the crowd (beyond the shared crowd buffers).
-    virtual std::vector<MemoryItem> memory() const = 0;
-    virtual SkinnedVertices skinnedVertices() const { return {}; }
+    // What the draw pass consumes from this method.
+    virtual render::DrawInput drawInput() const { return render::DrawInput::SkinnedVertices; }
+    // Records the work between culling and drawing (skinning, copies), marking each pass on the timer.
+    virtual void recordSkinning(VkCommandBuffer, gpu::GpuTimer&) {}
+    virtual render::SkinnedVertices skinnedVertices() const { return {}; }
+    // Buffers and images this method allocated for the crowd.
+    virtual std::vector<MemoryItem> memory() const { return {}; }
     // False once the method no longer reads bones (the static ceiling): the frame then skips
     // animation and the bone upload.
     virtual bool needsAnimation() const { return true; }
+    // True when every character has its own skinned slot at every LOD (static), instead of the
+    // frame's dense layout of visible characters.
+    virtual bool fixedLayout() const { return false; }
 };
 
 std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const MethodSetup& setup);
 
-// Device memory a method needs for this crowd, beyond the shared crowd buffers: checked before any
-// allocation so an impossible --count fails with a clear message instead of a driver error.
-std::uint64_t estimateMethodBytes(Method method, std::uint32_t vertexCount, std::uint32_t characterCount,
-                                  std::uint32_t maxTargetDimension);
+// Device memory a method needs for a crowd whose worst frame skins `skinnedCapacity` vertices (every
+// character visible at LOD 0) and whose fixed layout holds `fixedCapacity` (every character at every
+// LOD): checked before any allocation so an impossible --count fails with a clear message.
+std::uint64_t estimateMethodBytes(Method method, std::uint64_t characters, std::uint64_t skinnedCapacity,
+                                  std::uint64_t fixedCapacity, std::uint32_t maxTargetDimension);
 
 }  // namespace skin

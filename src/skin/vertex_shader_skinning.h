@@ -1,30 +1,22 @@
 #pragma once
-// The paper's baseline: no skinning pass; the vertex shader skins the bind-pose mesh while drawing,
-// one draw per character with that character's bones bound by a dynamic uniform-buffer offset
-// (the Vulkan counterpart of loading the paper's constant registers before each draw).
-#include <vector>
-
-#include "gpu/descriptor_bundle.h"
+// The vertex-shader methods: they produce nothing before the draw; the draw pass skins the bind pose
+// while drawing (render/character_draw.h). "vs" is the paper's baseline, one draw per character with
+// its bones at a dynamic uniform offset (the paper's constant registers); "vs-instanced" is the
+// modern one, one instanced draw per (model, LOD) bucket with the bones in a storage buffer.
 #include "skin/skinning_method.h"
 
 namespace skin {
 
 class VertexShaderSkinning final : public SkinningMethod {
 public:
-    explicit VertexShaderSkinning(const MethodSetup& setup);
-    ~VertexShaderSkinning() override;
-
-    Method method() const override { return Method::VertexShader; }
-    void recordSkinning(VkCommandBuffer, gpu::GpuTimer&) override {}
-    void recordDraw(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const render::ScenePush& push) override;
-    std::vector<MemoryItem> memory() const override { return {}; }
+    explicit VertexShaderSkinning(bool instanced) : instanced_(instanced) {}
+    Method method() const override { return instanced_ ? Method::VertexShaderInstanced : Method::VertexShader; }
+    render::DrawInput drawInput() const override {
+        return instanced_ ? render::DrawInput::BindPoseInstanced : render::DrawInput::BindPosePerCharacter;
+    }
 
 private:
-    const gpu::VulkanContext& context_;
-    const render::CrowdBuffers& crowd_;
-    gpu::DescriptorBundle bones_;
-    VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    bool instanced_;
 };
 
 }  // namespace skin

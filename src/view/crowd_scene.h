@@ -9,10 +9,11 @@
 
 #include <vulkan/vulkan.h>
 
+#include "app/crowd_app.h"
 #include "app/options.h"
 #include "crowd/crowd.h"
 #include "model/skinned_model.h"
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -21,7 +22,8 @@ namespace view {
 class CrowdScene {
 public:
     // Throws gpu::Error (one line) for a model, clip or crowd size that cannot be shown.
-    CrowdScene(const gpu::VulkanContext& context, const app::SceneOptions& scene, skin::Method method, VkExtent2D size);
+    CrowdScene(const gpu::VulkanContext& context, const app::SceneOptions& scene, skin::Method method,
+               const render::CullSettings& cull, VkExtent2D size);
 
     // Builds the crowd for new scene options. Checks everything that can be checked (model, clip,
     // memory) before the current crowd is released, and throws gpu::Error keeping it when a check
@@ -31,9 +33,11 @@ public:
     // would not fit in device memory with it.
     void setMethod(skin::Method method, VkExtent2D size);
 
-    render::CrowdRenderer& renderer() { return *renderer_; }
+    frame::CrowdRenderer& renderer() { return *renderer_; }
+    const frame::CrowdRenderer& renderer() const { return *renderer_; }
     const crowd::Crowd& crowd() const { return *crowd_; }
-    const model::SkinnedModel& model() const { return *model_; }
+    // The crowd's first model (the only one unless --model lists several).
+    const model::SkinnedModel& model() const { return *models_.models.front(); }
     const app::SceneOptions& options() const { return scene_; }
     skin::Method method() const { return method_; }
     // The largest crowd of this model that fits the device's memory with this method (the panel's limit).
@@ -45,9 +49,10 @@ private:
     const gpu::VulkanContext& context_;
     app::SceneOptions scene_;
     skin::Method method_;
-    std::unique_ptr<model::SkinnedModel> model_;
+    render::CullSettings cull_;
+    app::CrowdModels models_;
     std::unique_ptr<crowd::Crowd> crowd_;
-    std::unique_ptr<render::CrowdRenderer> renderer_;
+    std::unique_ptr<frame::CrowdRenderer> renderer_;
     std::vector<std::string> notes_;
 };
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "gpu/gpu_timer.h"
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 
 namespace view {
 
@@ -15,7 +15,7 @@ public:
     explicit FrameHistory(std::size_t capacity = 240) : capacity_(capacity) {}
 
     // A frame's statistics; the oldest frame is dropped beyond the capacity.
-    void add(const render::FrameStats& frame);
+    void add(const frame::FrameStats& frame);
     // Forgets everything (after a rebuild, so old figures do not blend with the new crowd's).
     void clear() { frames_.clear(); }
 
@@ -28,10 +28,12 @@ public:
     double meanCpuMs() const;
     // GPU time per pass, in the order the passes first appear.
     std::vector<gpu::PassTime> meanGpuMs() const;
+    // What the newest frame drew per level of detail (nothing before the first frame).
+    render::LodCounts latestLods() const { return frames_.empty() ? render::LodCounts{} : frames_.back().lods; }
 
 private:
     std::size_t capacity_;
-    std::deque<render::FrameStats> frames_;
+    std::deque<frame::FrameStats> frames_;
 };
 
 }  // namespace view

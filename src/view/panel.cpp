@@ -38,6 +38,7 @@ PanelRequests Panel::draw(const PanelState& state) {
         drawStats(state);
         drawCrowd(state, requests);
         drawAnimation(state, requests);
+        drawCulling(state, requests);
         drawCamera(state, requests);
         if (ImGui::Button("Screenshot (F12)")) requests.screenshot = true;
         if (!state.message.empty()) {
@@ -58,8 +59,11 @@ void Panel::drawStats(const PanelState& state) {
     ImGui::Text("CPU %.2f ms (animate + record)", history.meanCpuMs());
     for (const gpu::PassTime& pass : history.meanGpuMs())
         ImGui::Text("GPU %-7s %7.3f ms", pass.pass.c_str(), pass.milliseconds);
-    ImGui::Text("drawn: %s characters, %s triangles", thousands(state.characters).c_str(),
-                thousands(state.triangles).c_str());
+    ImGui::Text("drawn: %s of %s characters, %s triangles", thousands(state.lods.visible()).c_str(),
+                thousands(state.characters).c_str(), thousands(state.lods.totalTriangles()).c_str());
+    for (int l = 0; l < LOD_COUNT; ++l)
+        ImGui::Text("  LOD %d: %s characters, %s triangles", l, thousands(state.lods.characters[l]).c_str(),
+                    thousands(state.lods.triangles[l]).c_str());
 
     const std::vector<float> times = history.frameMs();
     const float longest = times.empty() ? 1.0f : *std::max_element(times.begin(), times.end());
@@ -104,8 +108,30 @@ void Panel::drawAnimation(const PanelState& state, PanelRequests& requests) {
     if (ImGui::Checkbox("paused (Space)", &paused)) requests.paused = paused;
 }
 
+void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
+    if (!ImGui::CollapsingHeader("LOD and culling", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    render::CullSettings cull = state.cull;
+    bool changed = ImGui::Checkbox("levels of detail", &cull.lod);
+    int mode = static_cast<int>(cull.mode);
+    ImGui::Text("culling");
+    for (render::CullMode m : {render::CullMode::Gpu, render::CullMode::Cpu, render::CullMode::Off}) {
+        ImGui::SameLine();
+        changed |= ImGui::RadioButton(render::cullModeName(m), &mode, static_cast<int>(m));
+    }
+    cull.mode = static_cast<render::CullMode>(mode);
+    float thresholds[2] = {cull.lodThresholds[0], cull.lodThresholds[1]};
+    if (ImGui::DragFloat2("LOD px", thresholds, 1.0f, 1.0f, 2000.0f, "%.0f") && thresholds[0] > thresholds[1] &&
+        thresholds[1] > 0.0f) {
+        cull.lodThresholds[0] = thresholds[0], cull.lodThresholds[1] = thresholds[1];
+        changed = true;
+    }
+    if (changed) requests.cull = cull;
+}
+
 void Panel::drawCamera(const PanelState& state, PanelRequests& requests) {
     if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    bool path = state.scenePath;
+    if (ImGui::Checkbox("scene's camera path", &path)) requests.scenePath = path;
     int mode = state.cameraMode == CameraMode::Orbit ? 0 : 1;
     if (ImGui::RadioButton("orbit", &mode, 0)) requests.cameraMode = CameraMode::Orbit;
     ImGui::SameLine();

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "render/cull_pass.h"
+#include "render/draw_lists.h"
 #include "skin/skinning_method.h"
 #include "view/camera_controller.h"
 #include "view/frame_history.h"
@@ -19,7 +21,9 @@ struct PanelState {
     std::string presentMode;
     std::uint32_t characters = 0;
     std::uint32_t maxCharacters = 1;
-    std::uint64_t triangles = 0;
+    render::LodCounts lods;      // drawn in the newest frame, per level of detail
+    render::CullSettings cull;
+    bool scenePath = false;
     skin::Method method = skin::Method::TwoPass;
     std::string model;
     std::vector<std::string> models;  // choices: built-in models, plus the --model file if any
@@ -38,6 +42,8 @@ struct PanelRequests {
     std::optional<bool> paused;
     std::optional<CameraMode> cameraMode;
     std::optional<std::optional<std::uint32_t>> follow;  // a character, or nullopt inside: stop following
+    std::optional<render::CullSettings> cull;  // LOD or culling switched
+    std::optional<bool> scenePath;
     bool resetCamera = false;
     bool screenshot = false;
 };
@@ -52,6 +58,7 @@ private:
     void drawCrowd(const PanelState& state, PanelRequests& requests);
     void drawAnimation(const PanelState& state, PanelRequests& requests);
     void drawCamera(const PanelState& state, PanelRequests& requests);
+    void drawCulling(const PanelState& state, PanelRequests& requests);
 
     // A crowd size being edited: applied when the slider is let go, not on every step of a drag
     // (each step would rebuild the crowd).

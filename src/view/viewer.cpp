@@ -19,7 +19,7 @@ namespace view {
 namespace {
 
 // The renderer's frames in flight; the swapchain sizes its ring of acquire semaphores by it.
-const std::uint32_t kFramesInFlight = render::RendererOptions{}.framesInFlight;
+const std::uint32_t kFramesInFlight = frame::RendererOptions{}.framesInFlight;
 // A stall (a rebuild, a dragged window) must not make the animation jump ahead.
 constexpr float kMaxStepSeconds = 0.25f;
 
@@ -49,7 +49,8 @@ Viewer::Viewer(const ViewerOptions& options)
                                    Window::requiredInstanceExtensions(), true}),
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
-      scene_(context_, options.render.scene, options.render.method, swapchain_.extent()) {
+      scene_(context_, options.render.scene, options.render.method, options.render.cull, swapchain_.extent()) {
+    controls_.scenePath = options.render.camera != render::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
     frameHome(true);
     maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
@@ -89,12 +90,18 @@ int Viewer::run() {
         // Scripts step a fixed 1/60 s per frame, as crowd-render does; people see real time.
         if (!controls_.paused) animationTime += seconds * controls_.speed;
         const float time = options_.scripted ? app::frameTime(frame) : animationTime;
+        if (controls_.scenePath) {
+            // The scene's camera path, as crowd-render flies it (frame N of a script is its frame N).
+            const VkExtent2D extent = swapchain_.extent();
+            scene_.renderer().camera = render::cameraOnPath(options_.render.camera, app::crowdShape(scene_.crowd()),
+                                                            static_cast<float>(extent.width) / extent.height, time);
+        }
         const bool lastScripted = options_.scripted && frame + 1 == options_.render.frames;
         if (!drawFrame(time, requests_.screenshot || (lastScripted && !options_.screenshot.empty()))) {
             swapchainStale_ = true;  // out of date before anything was drawn: recreate, draw this frame again
             continue;
         }
-        for (const render::FrameStats& stats : scene_.renderer().takeStats()) history_.add(stats);
+        for (const frame::FrameStats& stats : scene_.renderer().takeStats()) history_.add(stats);
         ++frame;
     }
     scene_.renderer().finish();
@@ -122,7 +129,7 @@ bool Viewer::drawFrame(float time, bool screenshot) {
     std::unique_ptr<Screenshot> shot;
     if (screenshot) shot = std::make_unique<Screenshot>(context_, swapchain_.extent(), swapchain_.format());
 
-    render::PresentHooks hooks;
+    frame::PresentHooks hooks;
     hooks.waitSemaphore = frame->acquired;
     hooks.signalSemaphore = frame->rendered;
     hooks.recordAfterScene = [&](VkCommandBuffer cmd, VkImage scene, VkExtent2D sceneExtent) {
@@ -188,6 +195,8 @@ void Viewer::apply(const PanelRequests& requests) {
         camera_.reset();
     }
     if (requests.follow) follow(*requests.follow);
+    if (requests.scenePath) controls_.scenePath = *requests.scenePath;
+    if (requests.cull) scene_.renderer().setCull(*requests.cull);
     try {
         if (requests.method) {
             scene_.setMethod(*requests.method, swapchain_.extent());
@@ -225,16 +234,16 @@ void Viewer::frameHome(bool moveCamera) {
     const crowd::Crowd& crowd = scene_.crowd();
     const VkExtent2D extent = swapchain_.extent();
     const float aspect = static_cast<float>(extent.width) / static_cast<float>(extent.height);
-    const float height = scene_.model().height();
+    const float height = crowd.tallestHeight();
     camera_.setHome(render::frameCrowd(crowd.center(), crowd.radius(), height, aspect),
                     {crowd.center(), crowd.radius(), height});
     if (moveCamera) camera_.reset();
 }
 
 glm::vec3 Viewer::characterCenter(std::uint32_t character) const {
-    const model::SkinnedModel& model = scene_.model();
-    return scene_.crowd().characters()[character].position +
-           glm::vec3(0.0f, 0.5f * (model.boundsMin.y + model.boundsMax.y), 0.0f);
+    const crowd::Character& c = scene_.crowd().characters()[character];
+    const model::SkinnedModel& model = scene_.crowd().model(c.model);
+    return c.position + glm::vec3(0.0f, 0.5f * c.scale * (model.boundsMin.y + model.boundsMax.y), 0.0f);
 }
 
 std::uint32_t Viewer::characterNearViewCenter() const {
@@ -282,7 +291,9 @@ PanelState Viewer::panelState() const {
     state.presentMode = presentModeName(swapchain_.presentMode());
     state.characters = scene_.crowd().size();
     state.maxCharacters = maxCharacters_;
-    state.triangles = static_cast<std::uint64_t>(state.characters) * scene_.model().triangleCount();
+    state.lods = history_.latestLods();
+    state.cull = scene_.renderer().cull();
+    state.scenePath = controls_.scenePath;
     state.method = scene_.method();
     state.model = scene_.options().model;
     state.models = modelChoices(options_.render.scene.model);

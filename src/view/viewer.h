@@ -34,6 +34,7 @@ private:
     struct Controls {
         float speed = 1.0f;
         bool paused = false;
+        bool scenePath = false;  // the camera flies the scene's path instead of the user's controls
         bool showPanel = true;
         std::optional<std::uint32_t> followed;
     };

@@ -22,12 +22,12 @@ void GpuTest::TearDown() {
     EXPECT_EQ(messages, 0u) << "validation reported messages (printed above)";
 }
 
-ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, const skin::SkinnedVertices& vertices,
-                                      std::uint32_t character, std::uint32_t vertexCount) {
+ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const render::SkinnedVertices& vertices,
+                                     std::uint32_t firstVertex, std::uint32_t vertexCount) {
     const VkDeviceSize bytes = static_cast<VkDeviceSize>(vertexCount) * sizeof(glm::vec4);
     gpu::Buffer staging = gpu::createBuffer(context, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                             gpu::MemoryUse::HostReadback, "test readback");
-    const VkDeviceSize first = static_cast<VkDeviceSize>(character) * vertices.characterStride * sizeof(glm::vec4);
+    const VkDeviceSize first = static_cast<VkDeviceSize>(firstVertex) * sizeof(glm::vec4);
     gpu::runOneShot(context, [&](VkCommandBuffer cmd) {
         const VkBufferCopy regions[2] = {{first, 0, bytes}, {vertices.normalsOffset + first, bytes, bytes}};
         vkCmdCopyBuffer(cmd, vertices.buffer->buffer, staging.buffer, 2, regions);
@@ -37,6 +37,47 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, const s
     std::memcpy(result.normals.data(), static_cast<const char*>(staging.mapped) + bytes, bytes);
     gpu::destroyBuffer(context, staging);
     return result;
+}
+
+std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::Buffer& buffer) {
+    gpu::Buffer staging = gpu::createBuffer(context, buffer.size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                            gpu::MemoryUse::HostReadback, "test readback");
+    gpu::runOneShot(context, [&](VkCommandBuffer cmd) {
+        const VkBufferCopy region{0, 0, buffer.size};
+        vkCmdCopyBuffer(cmd, buffer.buffer, staging.buffer, 1, &region);
+    });
+    std::vector<std::byte> bytes(buffer.size);
+    std::memcpy(bytes.data(), staging.mapped, bytes.size());
+    gpu::destroyBuffer(context, staging);
+    return bytes;
+}
+
+std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
+                                                     const frame::CrowdRenderer& renderer) {
+    const render::DrawLists& lists = renderer.drawLists();
+    const std::vector<std::byte> totalsBytes = readBuffer(context, lists.totals());
+    const std::vector<std::byte> drawBytes = readBuffer(context, lists.draws());
+    gpu::DrawTotals totals;
+    std::memcpy(&totals, totalsBytes.data(), sizeof totals);
+    std::map<std::uint32_t, DrawnCharacter> drawn;
+    for (std::uint32_t i = 0; i < totals.drawCount; ++i) {
+        gpu::DrawIndexedCommand draw;
+        std::memcpy(&draw, drawBytes.data() + i * sizeof draw, sizeof draw);
+        const std::uint32_t model = renderer.buffers().records()[draw.firstInstance].ids.x;
+        for (const gpu::BucketRecord& bucket : lists.buckets())
+            if (bucket.list.x == model && bucket.mesh.x == draw.firstIndex && bucket.mesh.y == draw.indexCount) {
+                drawn[draw.firstInstance] = {bucket.list.y, static_cast<std::uint32_t>(draw.vertexOffset), bucket.mesh.z};
+                break;
+            }
+    }
+    return drawn;
+}
+
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::CrowdRenderer& renderer,
+                                      std::uint32_t character) {
+    const std::map<std::uint32_t, DrawnCharacter> drawn = readDrawList(context, renderer);
+    const DrawnCharacter& d = drawn.at(character);
+    return readSkinnedVertices(context, renderer.method().skinnedVertices(), d.firstVertex, d.vertexCount);
 }
 
 double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance) {

@@ -1,12 +1,14 @@
 #pragma once
 // Test support for GPU tests: a Vulkan context with the Khronos validation layer and
 // synchronization validation; any validation message during a test fails it.
+#include <map>
 #include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "crowd/crowd.h"
+#include "frame/crowd_renderer.h"
 #include "gpu/vulkan_context.h"
 #include "render/png_writer.h"
 #include "skin/skinning_method.h"
@@ -25,8 +27,25 @@ struct ReadbackVertices {
     std::vector<glm::vec4> positions;
     std::vector<glm::vec4> normals;
 };
-ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, const skin::SkinnedVertices& vertices,
-                                      std::uint32_t character, std::uint32_t vertexCount);
+ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const render::SkinnedVertices& vertices,
+                                     std::uint32_t firstVertex, std::uint32_t vertexCount);
+
+// A device buffer's bytes, copied to the host.
+std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::Buffer& buffer);
+
+// One character in the last frame's draw list: its level of detail and its skinned vertices.
+struct DrawnCharacter {
+    std::uint32_t lod = 0;
+    std::uint32_t firstVertex = 0;
+    std::uint32_t vertexCount = 0;
+};
+// The last frame's compacted draw list, by character (culled characters are absent); call after finish().
+std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
+                                                     const frame::CrowdRenderer& renderer);
+
+// The last frame's skinned vertices of one drawn character (it must be in the draw list).
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::CrowdRenderer& renderer,
+                                      std::uint32_t character);
 
 // Fraction of pixels whose every channel differs by at most `tolerance` (out of 255).
 double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance);

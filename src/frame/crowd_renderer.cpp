@@ -1,12 +1,12 @@
-#include "render/crowd_renderer.h"
+#include "frame/crowd_renderer.h"
 
 #include <chrono>
 
+#include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
-#include "gpu/pipeline.h"
 
-namespace render {
+namespace frame {
 namespace {
 
 double nowMs() {
@@ -14,23 +14,27 @@ double nowMs() {
     return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
 }
 
+float aspectOf(VkExtent2D extent) { return static_cast<float>(extent.width) / static_cast<float>(extent.height); }
+
 }  // namespace
 
 CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd,
                              const RendererOptions& options)
     : context_(context),
       crowd_(crowd),
-      buffers_(context, crowd.model(), crowd.size(), options.framesInFlight),
-      target_(std::make_unique<RenderTarget>(context, options.size)),
+      pool_(context, crowd.models()),
+      buffers_(context, crowd, options.framesInFlight),
+      lists_(context, pool_, buffers_, options.framesInFlight),
+      cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
+      target_(std::make_unique<render::RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
-      material_(context, crowd.model()),
-      scene_(context, options.framesInFlight, material_),
+      scene_(context, options.framesInFlight, pool_),
+      draw_(context, pool_, buffers_, lists_, scene_.setLayout()),
       timer_(context, options.framesInFlight, options.passClock),
-      method_(skin::createSkinningMethod(options.method,
-                                         {context, buffers_, scene_.setLayout(), options.maxTargetDimension})),
+      method_(createMethod(options.method)),
+      cull_(options.cull),
       frames_(options.framesInFlight) {
-    const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
-    camera = frameCrowd(crowd.center(), crowd.radius(), crowd.model().height(), aspect);
+    camera = render::frameCrowd(crowd.center(), crowd.radius(), crowd.tallestHeight(), aspectOf(options.size));
     for (Frame& frame : frames_) {
         VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         allocate.commandPool = context.commandPool;
@@ -50,6 +54,10 @@ CrowdRenderer::~CrowdRenderer() {
     }
 }
 
+std::unique_ptr<skin::SkinningMethod> CrowdRenderer::createMethod(skin::Method method) const {
+    return skin::createSkinningMethod(method, {context_, pool_, buffers_, lists_, maxTargetDimension_});
+}
+
 void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     const auto slot = static_cast<std::uint32_t>(frameIndex_++ % frames_.size());
     Frame& frame = frames_[slot];
@@ -62,14 +70,11 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     // 1. Animation: every character's clip sampled at its own time, bones written for the GPU.
     const double animateStart = nowMs();
     const bool animate = method_->needsAnimation();
-    if (animate) crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneStride());
+    if (animate) crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneOffsets());
     const double recordStart = nowMs();
     frame.stats.animateMs = recordStart - animateStart;
 
-    // 2-5. Upload, skin, draw, timestamps: recorded into one command buffer and submitted.
-    const float aspect = static_cast<float>(target_->extent().width) / static_cast<float>(target_->extent().height);
-    scene_.update(slot, makeSceneUniforms(camera.viewProjection(aspect), crowd_.model().materialColors,
-                                          crowd_.model().texturedMaterials, 0.5f / (camera.farPlane + 1.0f)));
+    // 2-6. Upload, cull, skin, draw, timestamps: recorded into one command buffer and submitted.
     VK_CHECK(vkResetCommandBuffer(frame.cmd, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -78,6 +83,42 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     VK_CHECK(vkEndCommandBuffer(frame.cmd));
     submit(frame, hooks);
     frame.stats.recordMs = nowMs() - recordStart;
+}
+
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks) {
+    timer_.begin(cmd, slot);
+    if (uploadBones) {
+        buffers_.recordBoneUpload(cmd, slot);
+        timer_.mark(cmd, "upload");
+    }
+    recordCulling(cmd, slot);
+    timer_.mark(cmd, "cull");
+    method_->recordSkinning(cmd, timer_);
+    recordScene(cmd, slot);
+    timer_.mark(cmd, "draw");
+    if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());
+}
+
+void CrowdRenderer::recordCulling(VkCommandBuffer cmd, std::uint32_t slot) {
+    const VkExtent2D extent = target_->extent();
+    const gpu::CullUniforms uniforms = render::makeCullUniforms(
+        cull_, camera.viewProjection(aspectOf(extent)), camera.eye, camera.verticalFov, extent.height, crowd_.size(),
+        lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
+    const bool perCharacterDraws = method_->drawInput() == render::DrawInput::BindPosePerCharacter;
+    cullPass_.record(cmd, slot, uniforms, cull_.mode, method_->fixedLayout(), perCharacterDraws);
+}
+
+void CrowdRenderer::recordScene(VkCommandBuffer cmd, std::uint32_t slot) {
+    scene_.update(slot, render::makeSceneUniforms(camera.viewProjection(aspectOf(target_->extent())), pool_.palette(),
+                                                  pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f)));
+    const float clear[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+    target_->beginRendering(cmd, clear);
+    gpu::setViewportAndScissor(cmd, target_->extent());
+    const glm::vec3 center = crowd_.center();
+    const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(center.x, 0.0f, center.z, camera.farPlane)};
+    scene_.recordGround(cmd, slot, push);
+    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push);
+    target_->endRendering(cmd);
 }
 
 void CrowdRenderer::submit(Frame& frame, const PresentHooks* hooks) {
@@ -108,35 +149,14 @@ void CrowdRenderer::resize(VkExtent2D size) {
     finish();
     VK_CHECK(vkDeviceWaitIdle(context_.device));
     target_.reset();
-    target_ = std::make_unique<RenderTarget>(context_, size);
+    target_ = std::make_unique<render::RenderTarget>(context_, size);
 }
 
 void CrowdRenderer::setMethod(skin::Method method) {
     finish();
     VK_CHECK(vkDeviceWaitIdle(context_.device));
     method_.reset();
-    method_ = skin::createSkinningMethod(method, {context_, buffers_, scene_.setLayout(), maxTargetDimension_});
-}
-
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks) {
-    timer_.begin(cmd, slot);
-    if (uploadBones) {
-        buffers_.recordBoneUpload(cmd, slot);
-        timer_.mark(cmd, "upload");
-    }
-    method_->recordSkinning(cmd, timer_);
-
-    const float clear[4] = {kSkyColor.r, kSkyColor.g, kSkyColor.b, 1.0f};
-    target_->beginRendering(cmd, clear);
-    gpu::setViewportAndScissor(cmd, target_->extent());
-    const glm::vec3 center = crowd_.center();
-    const ScenePush push{glm::vec4(camera.eye, 1.0f),
-                         glm::vec4(center.x, 0.0f, center.z, camera.farPlane)};
-    scene_.recordGround(cmd, slot, push);
-    method_->recordDraw(cmd, scene_.set(slot), push);
-    target_->endRendering(cmd);
-    timer_.mark(cmd, "draw");
-    if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());
+    method_ = createMethod(method);
 }
 
 void CrowdRenderer::collect(Frame& frame, std::uint32_t slot) {
@@ -145,6 +165,7 @@ void CrowdRenderer::collect(Frame& frame, std::uint32_t slot) {
     VK_CHECK(vkResetFences(context_.device, 1, &frame.fence));
     frame.pending = false;
     frame.stats.gpu = timer_.results(slot);
+    frame.stats.lods = lists_.countsOf(slot);
     stats_.push_back(frame.stats);
 }
 
@@ -156,18 +177,18 @@ void CrowdRenderer::finish() {
     }
 }
 
-Rgba8Image CrowdRenderer::readback() {
+render::Rgba8Image CrowdRenderer::readback() {
     finish();
     return target_->readback();
 }
 
 std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
-    std::vector<skin::MemoryItem> items = {{"bind-pose vertices and indices", buffers_.bindVertices().size + buffers_.indices().size},
-                                           {"bone matrices", buffers_.bones().size},
-                                           {"render target", target_->bytes()},
-                                           {"base-colour texture and coordinates", material_.bytes()}};
+    std::vector<skin::MemoryItem> items = {{"geometry pool (vertices, LOD indices, textures)", pool_.bytes()},
+                                           {"character records and bone matrices", buffers_.deviceBytes()},
+                                           {"culling lists and draw commands", lists_.bytes()},
+                                           {"render target", target_->bytes()}};
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }
 
-}  // namespace render
+}  // namespace frame

@@ -1,6 +1,7 @@
 #pragma once
-// One frame of the crowd, top to bottom: animate on the CPU -> upload bones -> skin (method) ->
-// draw ground and characters -> resolve timestamps. Headless: it renders into an offscreen target.
+// One frame of the crowd, top to bottom in renderFrame: animate on the CPU -> upload bones -> cull and
+// choose LODs -> skin the visible (method) -> draw ground and characters -> resolve timestamps.
+// Headless: it renders into an offscreen target; a presenter adds its commands through PresentHooks.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -12,19 +13,23 @@
 #include "crowd/crowd.h"
 #include "gpu/gpu_timer.h"
 #include "render/camera.h"
+#include "render/character_draw.h"
 #include "render/crowd_buffers.h"
-#include "render/material_texture.h"
+#include "render/cull_pass.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
 #include "render/render_target.h"
 #include "render/scene_pass.h"
 #include "skin/skinning_method.h"
 
 namespace gpu { class VulkanContext; }
 
-namespace render {
+namespace frame {
 
 struct RendererOptions {
     VkExtent2D size{1280, 720};
     skin::Method method = skin::Method::TwoPass;
+    render::CullSettings cull;
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
@@ -32,9 +37,10 @@ struct RendererOptions {
 
 struct FrameStats {
     double animateMs = 0.0;  // CPU: sampling clips and computing bone matrices
-    double recordMs = 0.0;   // CPU: recording and submitting the command buffer
+    double recordMs = 0.0;   // CPU: culling on the CPU (--cull cpu), recording and submitting
     double intervalMs = 0.0; // wall clock since the previous frame started (0 for the first)
     std::vector<gpu::PassTime> gpu;  // per pass, from timestamp queries
+    render::LodCounts lods;  // visible characters and triangles drawn per level of detail
 };
 
 // What a presenter (the windowed viewer) adds to a frame: semaphores of its swapchain and commands
@@ -53,23 +59,30 @@ public:
     CrowdRenderer(const CrowdRenderer&) = delete;
     CrowdRenderer& operator=(const CrowdRenderer&) = delete;
 
-    // Renders the crowd at animation time `time` seconds.
+    // Renders the crowd at animation time `time` seconds, seen by `camera`.
     void renderFrame(float time, const PresentHooks* hooks = nullptr);
     // Recreates the offscreen target at a new size (waits for the GPU).
     void resize(VkExtent2D size);
     // Switches the skinning method (waits for the GPU).
     void setMethod(skin::Method method);
+    // Culling and LOD settings of the next frames (takes effect at once).
+    void setCull(const render::CullSettings& cull) { cull_ = cull; }
+    const render::CullSettings& cull() const { return cull_; }
     // Hands over the statistics collected so far and starts a new list.
     std::vector<FrameStats> takeStats() { return std::exchange(stats_, {}); }
     // Waits for every frame in flight and collects its statistics.
     void finish();
-    Rgba8Image readback();
+    render::Rgba8Image readback();
 
-    Camera camera;
+    render::Camera camera;
     const std::vector<FrameStats>& stats() const { return stats_; }
     skin::SkinningMethod& method() { return *method_; }
-    const CrowdBuffers& buffers() const { return buffers_; }
-    // Device memory of the crowd buffers, the method's resources and the render target.
+    const render::GeometryPool& pool() const { return pool_; }
+    const render::CrowdBuffers& buffers() const { return buffers_; }
+    const render::DrawLists& drawLists() const { return lists_; }
+    const render::CullPass& cullPass() const { return cullPass_; }
+    VkExtent2D extent() const { return target_->extent(); }
+    // Device memory of the crowd's buffers, the method's resources and the render target.
     std::vector<skin::MemoryItem> memory() const;
 
 private:
@@ -81,21 +94,28 @@ private:
     };
     void collect(Frame& frame, std::uint32_t slot);
     void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks);
+    void recordCulling(VkCommandBuffer cmd, std::uint32_t slot);
+    void recordScene(VkCommandBuffer cmd, std::uint32_t slot);
     void submit(Frame& frame, const PresentHooks* hooks);
+    std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
 
     const gpu::VulkanContext& context_;
     const crowd::Crowd& crowd_;
-    CrowdBuffers buffers_;
-    std::unique_ptr<RenderTarget> target_;
+    render::GeometryPool pool_;
+    render::CrowdBuffers buffers_;
+    render::DrawLists lists_;
+    render::CullPass cullPass_;
+    std::unique_ptr<render::RenderTarget> target_;
     std::uint32_t maxTargetDimension_;
-    MaterialTexture material_;
-    ScenePass scene_;
+    render::ScenePass scene_;
+    render::CharacterDraw draw_;
     gpu::GpuTimer timer_;
     std::unique_ptr<skin::SkinningMethod> method_;
+    render::CullSettings cull_;
     std::vector<Frame> frames_;
     std::vector<FrameStats> stats_;
     std::uint64_t frameIndex_ = 0;
     double lastFrameStart_ = -1.0;
 };
 
-}  // namespace render
+}  // namespace frame

@@ -1,0 +1,40 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// After the prefix sums: one indexed draw per visible character, compacted for
+// vkCmdDrawIndexedIndirectCount, drawing its LOD's index range from its skinned vertices;
+// firstInstance carries the character to the shaders. For the vertex-shader baseline, the same draw
+// from the bind pose in the character's own slot (culled characters' slots stay zeroed).
+#include "gpu_types.h"
+
+layout(local_size_x = CULL_WORKGROUP_SIZE) in;
+
+layout(push_constant) uniform Push {
+    uint fixedLayout;       // 1: every character has its own skinned slot (the static method)
+    uint characterDrawsOn;  // 1: write the per-character draws too
+};
+layout(std140, set = 0, binding = 0) uniform Cull { CullUniforms cull; };
+layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Frames { BucketFrame frames[]; };
+layout(std430, set = 0, binding = 5) readonly buffer Visible { uint visible[]; };
+layout(std430, set = 0, binding = 7) readonly buffer Totals { DrawTotals totals; };
+layout(std430, set = 0, binding = 10) writeonly buffer Draws { DrawIndexedCommand draws[]; };
+layout(std430, set = 0, binding = 11) writeonly buffer CharacterDraws { DrawIndexedCommand characterDraws[]; };
+
+void main() {
+    uint stride = gl_NumWorkGroups.x * CULL_WORKGROUP_SIZE;
+    for (uint i = gl_GlobalInvocationID.x; i < totals.drawCount; i += stride) {
+        // The bucket holding draw i: the last whose first draw is at or before i (empty buckets share
+        // their successor's base and are stepped over).
+        uint b = 0u;
+        while (b + 1u < cull.flags.w && frames[b + 1u].drawBase <= i) ++b;
+        BucketRecord bucket = buckets[b];
+        uint k = i - frames[b].drawBase;
+        uint c = visible[bucket.list.z + k];
+        uint vertexOffset = fixedLayout != 0u ? bucket.fixedLayout.x + characters[c].ids.z * bucket.mesh.z
+                                              : frames[b].vertexBase + k * bucket.mesh.z;
+        draws[i] = DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(vertexOffset), c);
+        if (characterDrawsOn != 0u)
+            characterDraws[c] = DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(bucket.mesh.w), c);
+    }
+}

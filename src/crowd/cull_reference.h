@@ -1,0 +1,34 @@
+#pragma once
+// Frustum culling and level-of-detail choice on the CPU: the reference the GPU cull pass is tested
+// against (the same operations as shaders/cull.glsl.inc, in the same order), and the `--cull cpu`
+// path. It reads the same records the GPU reads, so both see identical inputs.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu_types.h"
+
+namespace crowd {
+
+// The six planes of a Vulkan view-projection (clip x, y in [-w, w], z in [0, w]), normals pointing
+// inside, normalized so that plane distances are in world units.
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProjection);
+
+glm::vec4 worldSphere(const gpu::CharacterRecord& character, const gpu::ModelRecord& model);
+bool sphereInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere);
+float projectedDiameter(const glm::vec4& sphere, const glm::vec4& camera);
+std::uint32_t lodForSize(float size, const glm::vec4& lod, float scale);
+std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod);
+
+// Visible characters per bucket (model x LOD_COUNT + lod), in character order.
+using VisibleLists = std::vector<std::vector<std::uint32_t>>;
+
+// Culls and picks levels for every character as the GPU pass does. `lodState` holds each character's
+// last level + 1 (0: none yet) and is updated, as the GPU keeps it.
+VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::CharacterRecord> characters,
+                       std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState);
+
+}  // namespace crowd

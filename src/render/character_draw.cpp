@@ -1,0 +1,137 @@
+#include "render/character_draw.h"
+
+#include <string>
+
+#include "draw.frag.spv.h"
+#include "draw.vert.spv.h"
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+#include "render/render_target.h"
+#include "skin_vs.vert.spv.h"
+#include "skin_vs_instanced.vert.spv.h"
+
+namespace render {
+namespace {
+
+constexpr VkShaderStageFlags kDrawStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// The paper's baseline binds one character's bones per draw: a uniform range of the largest block.
+gpu::BufferBinding boneBlockBinding(const gpu::VulkanContext& context, const CrowdBuffers& crowd) {
+    const VkDeviceSize range = static_cast<VkDeviceSize>(crowd.largestBoneBlock()) * sizeof(gpu::BoneRows);
+    if (range > context.properties.limits.maxUniformBufferRange)
+        throw gpu::Error("vs: a bone block of " + gpu::formatBytes(range) + " is over this device's uniform range of " +
+                         gpu::formatBytes(context.properties.limits.maxUniformBufferRange));
+    return {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, crowd.bones().buffer, 0, range};
+}
+
+}  // namespace
+
+CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
+                             const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout)
+    : context_(context), pool_(pool), crowd_(crowd), lists_(lists) {
+    try {
+        constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const gpu::BufferBinding crowdBindings[] = {{storage, pool.modelTable().buffer},
+                                                    {storage, crowd.characters().buffer},
+                                                    {storage, lists.visible().buffer},
+                                                    {storage, crowd.bones().buffer}};
+        crowdSet_ = std::make_unique<gpu::DescriptorBundle>(context, kDrawStages, crowdBindings);
+        const gpu::BufferBinding block[] = {boneBlockBinding(context, crowd)};
+        boneBlock_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, block);
+        createPipelines(sceneSetLayout);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+CharacterDraw::~CharacterDraw() { release(); }
+
+void CharacterDraw::release() {
+    for (VkPipeline* p : {&instanced_, &perCharacter_, &skinned_}) {
+        if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
+        *p = VK_NULL_HANDLE;
+    }
+    if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
+    layout_ = VK_NULL_HANDLE;
+    boneBlock_.reset();
+    crowdSet_.reset();
+}
+
+void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout) {
+    const VkDescriptorSetLayout sets[3] = {sceneSetLayout, crowdSet_->layout(), boneBlock_->layout()};
+    const VkPushConstantRange push{kDrawStages, 0, sizeof(ScenePush)};
+    layout_ = gpu::createPipelineLayout(context_, sets, {&push, 1});
+    gpu::GraphicsPipelineDesc desc;
+    desc.fragmentShader = draw_frag_spv;
+    desc.colorFormats = {kColorFormat};
+    desc.depthFormat = kDepthFormat;
+    desc.layout = layout_;
+
+    // Skinned vertices: positions and normals are two streams of the same buffer.
+    desc.vertexShader = draw_vert_spv;
+    desc.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
+    skinned_ = gpu::createGraphicsPipeline(context_, desc);
+
+    // Bind-pose vertices, skinned while drawing.
+    desc.bindings = {{0, sizeof(gpu::SkinVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::SkinVertex, position)},
+                       {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::SkinVertex, normal)},
+                       {2, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(gpu::SkinVertex, joints)},
+                       {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::SkinVertex, weights)}};
+    desc.vertexShader = skin_vs_vert_spv;
+    desc.vertexConstants = {crowd_.largestBoneBlock()};
+    perCharacter_ = gpu::createGraphicsPipeline(context_, desc);
+    desc.vertexShader = skin_vs_instanced_vert_spv;
+    desc.vertexConstants = {};
+    instanced_ = gpu::createGraphicsPipeline(context_, desc);
+}
+
+void CharacterDraw::bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescriptorSet sceneSet,
+                               const ScenePush& push) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    const VkDescriptorSet sets[2] = {sceneSet, crowdSet_->set()};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 2, sets, 0, nullptr);
+    vkCmdPushConstants(cmd, layout_, kDrawStages, 0, sizeof push, &push);
+    vkCmdBindIndexBuffer(cmd, pool_.indices().buffer, 0, VK_INDEX_TYPE_UINT32);
+}
+
+void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices,
+                           VkDescriptorSet sceneSet, const ScenePush& push) const {
+    constexpr std::uint32_t stride = sizeof(gpu::DrawIndexedCommand);
+    const VkDeviceSize zero = 0;
+    switch (input) {
+        case DrawInput::SkinnedVertices: {
+            bindCommon(cmd, skinned_, sceneSet, push);
+            const VkBuffer buffers[2] = {vertices.buffer->buffer, vertices.buffer->buffer};
+            const VkDeviceSize offsets[2] = {0, vertices.normalsOffset};
+            vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
+            vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, 0, lists_.totals().buffer,
+                                          offsetof(gpu::DrawTotals, drawCount), lists_.characterCount(), stride);
+            break;
+        }
+        case DrawInput::BindPoseInstanced:
+            bindCommon(cmd, instanced_, sceneSet, push);
+            vkCmdBindVertexBuffers(cmd, 0, 1, &pool_.bindVertices().buffer, &zero);
+            vkCmdDrawIndexedIndirect(cmd, lists_.bucketDraws().buffer, 0, lists_.bucketCount(), stride);
+            break;
+        case DrawInput::BindPosePerCharacter: {
+            bindCommon(cmd, perCharacter_, sceneSet, push);
+            vkCmdBindVertexBuffers(cmd, 0, 1, &pool_.bindVertices().buffer, &zero);
+            // The paper's shape: the CPU binds each character's bones and issues its draw; the GPU has
+            // written each slot's command (instanceCount 0 when culled, its LOD's range otherwise).
+            const VkDescriptorSet block = boneBlock_->set();
+            const std::span<const std::uint32_t> offsets = crowd_.boneOffsets();
+            for (std::uint32_t c = 0; c < crowd_.characterCount(); ++c) {
+                const auto dynamicOffset = static_cast<std::uint32_t>(offsets[c] * sizeof(gpu::BoneRows));
+                vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 2, 1, &block, 1, &dynamicOffset);
+                vkCmdDrawIndexedIndirect(cmd, lists_.characterDraws().buffer, static_cast<VkDeviceSize>(c) * stride, 1, stride);
+            }
+            break;
+        }
+    }
+}
+
+}  // namespace render

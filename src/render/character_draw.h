@@ -1,0 +1,64 @@
+#pragma once
+// The draw pass of the characters: it consumes what a skinning method produced. Methods that skin
+// before drawing leave world-space vertices in a buffer, drawn with one vkCmdDrawIndexedIndirectCount
+// over the compacted list culling wrote; the vertex-shader methods leave nothing, and the draw skins
+// the bind pose as it goes: the paper's baseline with one draw per character slot and its bones at a
+// dynamic uniform offset, or one instanced draw per (model, LOD) bucket. A later pass (shadows, an
+// impostor capture) consumes the same inputs the same way.
+#include <cstdint>
+#include <memory>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/buffer.h"
+#include "gpu/descriptor_bundle.h"
+#include "render/crowd_buffers.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
+#include "render/scene_pass.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+enum class DrawInput {
+    SkinnedVertices,          // world-space positions and normals in a buffer (SkinnedVertices)
+    BindPosePerCharacter,     // skin in the vertex shader, one draw per character (the paper's baseline)
+    BindPoseInstanced,        // skin in the vertex shader, one instanced draw per bucket
+};
+
+// Where a method left the skinned vertices: positions (RGBA32F) at the start of the buffer, normals
+// (xyz, material in w) at normalsOffset; vertex i of a draw is at vertexOffset + i in both.
+struct SkinnedVertices {
+    const gpu::Buffer* buffer = nullptr;
+    VkDeviceSize normalsOffset = 0;
+};
+
+class CharacterDraw {
+public:
+    CharacterDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
+                  const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout);
+    ~CharacterDraw();
+    CharacterDraw(const CharacterDraw&) = delete;
+    CharacterDraw& operator=(const CharacterDraw&) = delete;
+
+    // Records the characters' draws inside a rendering pass whose scene set is `sceneSet`.
+    void record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices, VkDescriptorSet sceneSet,
+                const ScenePush& push) const;
+
+private:
+    void createPipelines(VkDescriptorSetLayout sceneSetLayout);
+    void release();
+    void bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescriptorSet sceneSet, const ScenePush& push) const;
+
+    const gpu::VulkanContext& context_;
+    const GeometryPool& pool_;
+    const CrowdBuffers& crowd_;
+    const DrawLists& lists_;
+    std::unique_ptr<gpu::DescriptorBundle> crowdSet_;   // set 1: models, characters, visible lists, bones
+    std::unique_ptr<gpu::DescriptorBundle> boneBlock_;  // set 2: one character's bones (dynamic offset)
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline skinned_ = VK_NULL_HANDLE, perCharacter_ = VK_NULL_HANDLE, instanced_ = VK_NULL_HANDLE;
+};
+
+}  // namespace render

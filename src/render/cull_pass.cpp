@@ -1,0 +1,165 @@
+#include "render/cull_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "crowd/cull_reference.h"
+#include "cull.comp.spv.h"
+#include "cull_emit.comp.spv.h"
+#include "cull_finalize.comp.spv.h"
+#include "gpu/barriers.h"
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+
+namespace render {
+
+const char* cullModeName(CullMode mode) {
+    switch (mode) {
+        case CullMode::Gpu: return "gpu";
+        case CullMode::Cpu: return "cpu";
+        case CullMode::Off: return "off";
+    }
+    return "?";
+}
+
+bool parseCullMode(const std::string& name, CullMode& mode) {
+    for (CullMode m : {CullMode::Gpu, CullMode::Cpu, CullMode::Off})
+        if (name == cullModeName(m)) return mode = m, true;
+    return false;
+}
+
+gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4& viewProjection, const glm::vec3& eye,
+                                   float verticalFov, std::uint32_t viewportHeight, std::uint32_t characters,
+                                   std::uint32_t buckets, std::uint32_t maxGroups) {
+    gpu::CullUniforms u{};
+    const std::array<glm::vec4, 6> planes = crowd::frustumPlanes(viewProjection);
+    std::copy(planes.begin(), planes.end(), u.planes);
+    u.camera = glm::vec4(eye, static_cast<float>(viewportHeight) / (2.0f * std::tan(0.5f * verticalFov)));
+    u.lod = glm::vec4(settings.lodThresholds[0], settings.lodThresholds[1], settings.hysteresis, 0.0f);
+    u.flags = glm::uvec4(characters, settings.mode != CullMode::Off ? 1u : 0u, settings.lod ? 1u : 0u, buckets);
+    u.limits = glm::uvec4(maxGroups, 0u, 0u, 0u);
+    return u;
+}
+
+namespace {
+
+struct EmitPush {
+    std::uint32_t fixedLayout;
+    std::uint32_t characterDraws;
+};
+
+constexpr VkPipelineStageFlags2 kConsumers =
+    VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT;
+constexpr gpu::Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+constexpr gpu::Access kTransferWrite{VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                     VK_ACCESS_2_TRANSFER_WRITE_BIT};
+
+}  // namespace
+
+CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
+                   DrawLists& lists, std::uint32_t framesInFlight)
+    : context_(context), pool_(pool), crowd_(crowd), lists_(lists) {
+    const VkDeviceSize align = context.properties.limits.minUniformBufferOffsetAlignment;
+    uniformStride_ = (sizeof(gpu::CullUniforms) + align - 1) / align * align;
+    uniforms_ = gpu::createBuffer(context, uniformStride_ * framesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                  gpu::MemoryUse::HostUpload, "cull uniforms");
+    try {
+        constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const gpu::BufferBinding bindings[] = {
+            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, uniforms_.buffer, 0, sizeof(gpu::CullUniforms)},
+            {storage, pool.modelTable().buffer},         {storage, crowd.characters().buffer},
+            {storage, lists.bucketRecords().buffer},     {storage, lists.bucketFrames().buffer},
+            {storage, lists.visible().buffer},           {storage, lists.lodState().buffer},
+            {storage, lists.totals().buffer},            {storage, lists.bucketDraws().buffer},
+            {storage, lists.skinDispatches().buffer},    {storage, lists.draws().buffer},
+            {storage, lists.characterDraws().buffer}};
+        descriptors_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
+        const VkDescriptorSetLayout setLayout = descriptors_->layout();
+        const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(EmitPush)};
+        layout_ = gpu::createPipelineLayout(context, {&setLayout, 1}, {&push, 1});
+        cull_ = createPipeline(cull_comp_spv);
+        finalize_ = createPipeline(cull_finalize_comp_spv);
+        emit_ = createPipeline(cull_emit_comp_spv);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+CullPass::~CullPass() { release(); }
+
+void CullPass::release() {
+    for (VkPipeline* p : {&emit_, &finalize_, &cull_}) {
+        if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
+        *p = VK_NULL_HANDLE;
+    }
+    if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
+    layout_ = VK_NULL_HANDLE;
+    descriptors_.reset();
+    gpu::destroyBuffer(context_, uniforms_);
+}
+
+VkPipeline CullPass::createPipeline(std::span<const std::uint32_t> spirv) {
+    return gpu::createComputePipeline(context_, spirv, layout_, {});
+}
+
+void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms, CullMode mode,
+                      bool fixedLayout, bool characterDraws) {
+    const VkDeviceSize offset = uniformStride_ * frameSlot;
+    std::memcpy(static_cast<std::byte*>(uniforms_.mapped) + offset, &uniforms, sizeof uniforms);
+    // The previous frame's skinning, draws and readback must be done with the lists before they are rewritten.
+    gpu::memoryBarrier(cmd, {kConsumers, 0}, {kTransferWrite.stage | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0});
+    vkCmdFillBuffer(cmd, lists_.bucketFrames().buffer, 0, VK_WHOLE_SIZE, 0);
+    if (characterDraws) vkCmdFillBuffer(cmd, lists_.characterDraws().buffer, 0, VK_WHOLE_SIZE, 0);
+    if (mode == CullMode::Cpu) recordCpuCulling(cmd, frameSlot, uniforms);
+    gpu::memoryBarrier(cmd, kTransferWrite, kComputeWrite);
+
+    const VkDescriptorSet set = descriptors_->set();
+    const auto dynamicOffset = static_cast<std::uint32_t>(offset);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 1, &dynamicOffset);
+    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u};
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    if (mode != CullMode::Cpu) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
+        const std::uint32_t groups = (lists_.characterCount() + CULL_WORKGROUP_SIZE - 1) / CULL_WORKGROUP_SIZE;
+        vkCmdDispatch(cmd, std::clamp(groups, 1u, uniforms.limits.x), 1, 1);
+        gpu::memoryBarrier(cmd, kComputeWrite, kComputeWrite);
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, finalize_);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    gpu::memoryBarrier(cmd, kComputeWrite,
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, emit_);
+    vkCmdDispatchIndirect(cmd, lists_.totals().buffer, offsetof(gpu::DrawTotals, emitDispatch));
+    gpu::memoryBarrier(cmd, kComputeWrite,
+                       {kConsumers, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                                        VK_ACCESS_2_UNIFORM_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT});
+    // The counts go to the host for statistics (read once this frame's fence has signalled).
+    const VkBufferCopy counts{0, 0, lists_.bucketFrames().size};
+    vkCmdCopyBuffer(cmd, lists_.bucketFrames().buffer, lists_.readback(frameSlot).buffer, 1, &counts);
+}
+
+void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms) {
+    cpuLodState_.resize(lists_.characterCount(), 0u);
+    const crowd::VisibleLists visible = crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_);
+    const gpu::Buffer& staging = lists_.cpuStaging(frameSlot);
+    auto* frames = static_cast<gpu::BucketFrame*>(staging.mapped);
+    auto* list = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(staging.mapped) + lists_.bucketFrames().size);
+    for (std::size_t b = 0; b < visible.size(); ++b) {
+        frames[b] = {static_cast<std::uint32_t>(visible[b].size()), 0u, 0u, 0u};
+        std::copy(visible[b].begin(), visible[b].end(), list + lists_.buckets()[b].list.z);
+    }
+    // The fill of the counts (just recorded) must land before the copy overwrites them.
+    gpu::memoryBarrier(cmd, kTransferWrite, kTransferWrite);
+    const VkBufferCopy countsRegion{0, 0, lists_.bucketFrames().size};
+    vkCmdCopyBuffer(cmd, staging.buffer, lists_.bucketFrames().buffer, 1, &countsRegion);
+    const VkBufferCopy listRegion{lists_.bucketFrames().size, 0, lists_.visible().size};
+    vkCmdCopyBuffer(cmd, staging.buffer, lists_.visible().buffer, 1, &listRegion);
+}
+
+}  // namespace render

@@ -1,0 +1,82 @@
+#pragma once
+// Culling and level of detail for a frame, on the GPU (or, for reference, on the CPU), then the prefix
+// sums and the indirect commands that the skinning and draw passes consume (render/draw_lists.h).
+// Three compute dispatches: cull (one thread per character), finalize (one thread: bucket bases),
+// emit (one thread per visible character: its draw command).
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gpu/buffer.h"
+#include "gpu/descriptor_bundle.h"
+#include "gpu_types.h"
+#include "render/crowd_buffers.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+enum class CullMode { Gpu, Cpu, Off };
+const char* cullModeName(CullMode mode);
+// "gpu", "cpu", "off"; false for anything else.
+bool parseCullMode(const std::string& name, CullMode& mode);
+
+struct CullSettings {
+    CullMode mode = CullMode::Gpu;
+    bool lod = true;
+    // A character is drawn at LOD 0 while its pose sphere's projected diameter is at least
+    // lodThresholds[0] pixels, at LOD 1 while at least lodThresholds[1], else at LOD 2.
+    float lodThresholds[2] = {150.0f, 50.0f};
+    // A character keeps its level until its size passes a threshold by this fraction of it.
+    float hysteresis = 0.1f;
+};
+
+// The cull pass's uniforms for a camera: frustum planes from the view-projection, the eye, and the
+// pixel scale of a `viewportHeight`-pixel image with this vertical field of view.
+gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4& viewProjection, const glm::vec3& eye,
+                                   float verticalFov, std::uint32_t viewportHeight, std::uint32_t characters,
+                                   std::uint32_t buckets, std::uint32_t maxGroups);
+
+class CullPass {
+public:
+    CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd, DrawLists& lists,
+             std::uint32_t framesInFlight);
+    ~CullPass();
+    CullPass(const CullPass&) = delete;
+    CullPass& operator=(const CullPass&) = delete;
+
+    // Records culling for the frame in `frameSlot`: the lists, bases and commands are ready for every
+    // later stage (indirect reads, vertex, fragment and compute shaders) when it returns.
+    // `fixedLayout`: draws read every character's own skinned slot (the static method).
+    // `characterDraws`: also write one draw per character slot (the vertex-shader baseline).
+    void record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms, CullMode mode,
+                bool fixedLayout, bool characterDraws);
+
+    // The lodState of the CPU path (one per character: last level + 1, or 0).
+    const std::vector<std::uint32_t>& cpuLodState() const { return cpuLodState_; }
+
+private:
+    void recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms);
+    VkPipeline createPipeline(std::span<const std::uint32_t> spirv);
+    void release();
+
+    const gpu::VulkanContext& context_;
+    const GeometryPool& pool_;
+    const CrowdBuffers& crowd_;
+    DrawLists& lists_;
+    VkDeviceSize uniformStride_;
+    gpu::Buffer uniforms_;
+    std::unique_ptr<gpu::DescriptorBundle> descriptors_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline cull_ = VK_NULL_HANDLE, finalize_ = VK_NULL_HANDLE, emit_ = VK_NULL_HANDLE;
+    std::vector<std::uint32_t> cpuLodState_;
+};
+
+}  // namespace render

@@ -1,0 +1,134 @@
+#include "render/draw_lists.h"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "gpu/one_shot_commands.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+
+namespace render {
+
+std::uint32_t skinningCharactersPerGroup(const gpu::VulkanContext& context, std::uint32_t joints) {
+    const std::uint32_t shared = context.properties.limits.maxComputeSharedMemorySize;
+    const std::uint32_t perCharacter = joints * static_cast<std::uint32_t>(sizeof(gpu::BoneRows));
+    if (perCharacter > shared)
+        throw gpu::Error("compute: " + std::to_string(joints) + " joints do not fit in shared memory");
+    return std::clamp<std::uint32_t>(std::min<std::uint32_t>(16384, shared) / std::max(perCharacter, 1u), 1, 8);
+}
+
+namespace {
+
+// Buckets in model-major order (model x LOD_COUNT + lod), each listing up to all its model's characters.
+std::vector<gpu::BucketRecord> planBuckets(const gpu::VulkanContext& context, const GeometryPool& pool,
+                                           const CrowdBuffers& crowd, std::uint64_t& skinnedCapacity,
+                                           std::uint64_t& fixedCapacity) {
+    std::vector<std::uint32_t> members(pool.modelCount(), 0);
+    for (const gpu::CharacterRecord& c : crowd.records()) ++members[c.ids.x];
+    std::vector<gpu::BucketRecord> buckets;
+    std::uint32_t listBase = 0;
+    skinnedCapacity = fixedCapacity = 0;
+    for (std::uint32_t m = 0; m < pool.modelCount(); ++m) {
+        const gpu::ModelRecord& model = pool.models()[m];
+        const std::uint32_t perGroup = skinningCharactersPerGroup(context, model.info.y);
+        skinnedCapacity += static_cast<std::uint64_t>(members[m]) * model.lodVertexCount[0];
+        for (std::uint32_t l = 0; l < LOD_COUNT; ++l) {
+            gpu::BucketRecord b{};
+            b.list = glm::uvec4(m, l, listBase, members[m]);
+            b.mesh = glm::uvec4(model.lodFirstIndex[l], model.lodIndexCount[l], model.lodVertexCount[l], model.info.x);
+            b.fixedLayout = glm::uvec4(static_cast<std::uint32_t>(std::min<std::uint64_t>(fixedCapacity, UINT32_MAX)),
+                                       perGroup, 0u, 0u);
+            fixedCapacity += static_cast<std::uint64_t>(members[m]) * model.lodVertexCount[l];
+            listBase += members[m];
+            buckets.push_back(b);
+        }
+    }
+    return buckets;
+}
+
+}  // namespace
+
+std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets) {
+    // visible lists (one entry per character and LOD), two draw commands and the LOD state per character
+    return characters * (LOD_COUNT * 4 + 2 * sizeof(gpu::DrawIndexedCommand) + 4) +
+           buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + sizeof(gpu::DrawIndexedCommand) + 16);
+}
+
+DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
+                     std::uint32_t framesInFlight)
+    : context_(context),
+      buckets_(planBuckets(context, pool, crowd, skinnedCapacity_, fixedCapacity_)),
+      characterCount_(crowd.characterCount()) {
+    const VkDeviceSize n = std::max(characterCount_, 1u);
+    const VkDeviceSize b = buckets_.size();
+    constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    constexpr VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    // Transfer source too: tests and tools read the lists back.
+    constexpr VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    constexpr auto device = gpu::MemoryUse::DeviceLocal;
+    try {
+        bucketRecords_ = gpu::createBufferWithData(context, std::as_bytes(std::span(buckets_)), storage, "LOD buckets");
+        bucketFrames_ = gpu::createBuffer(context, b * sizeof(gpu::BucketFrame),
+                                          filled | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, device, "bucket counts");
+        totals_ = gpu::createBuffer(context, sizeof(gpu::DrawTotals), indirect, device, "draw totals");
+        visible_ = gpu::createBuffer(context, n * LOD_COUNT * 4, filled, device, "visible lists");
+        draws_ = gpu::createBuffer(context, n * sizeof(gpu::DrawIndexedCommand), indirect, device, "draw commands");
+        characterDraws_ = gpu::createBuffer(context, n * sizeof(gpu::DrawIndexedCommand), indirect | filled, device,
+                                            "per-character draw commands");
+        bucketDraws_ = gpu::createBuffer(context, b * sizeof(gpu::DrawIndexedCommand), indirect, device,
+                                         "per-bucket draw commands");
+        skinDispatches_ = gpu::createBuffer(context, b * sizeof(glm::uvec4), indirect, device, "skinning dispatches");
+        lodState_ = gpu::createBuffer(context, n * 4, filled, device, "LOD state");
+        gpu::runOneShot(context, [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, lodState_.buffer, 0, VK_WHOLE_SIZE, 0); });
+        for (std::uint32_t i = 0; i < framesInFlight; ++i) {
+            readback_.push_back(gpu::createBuffer(context, b * sizeof(gpu::BucketFrame), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                  gpu::MemoryUse::HostReadback, "bucket counts (readback)"));
+            std::memset(readback_.back().mapped, 0, readback_.back().size);
+        }
+        cpuStaging_.resize(framesInFlight);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+DrawLists::~DrawLists() { release(); }
+
+void DrawLists::release() {
+    for (gpu::Buffer& buffer : cpuStaging_) gpu::destroyBuffer(context_, buffer);
+    for (gpu::Buffer& buffer : readback_) gpu::destroyBuffer(context_, buffer);
+    for (gpu::Buffer* buffer : {&lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_,
+                                &totals_, &bucketFrames_, &bucketRecords_})
+        gpu::destroyBuffer(context_, *buffer);
+}
+
+const gpu::Buffer& DrawLists::cpuStaging(std::uint32_t frameSlot) {
+    // Made on first use: only the CPU path needs it (bucket counts, then the lists).
+    gpu::Buffer& staging = cpuStaging_[frameSlot];
+    if (!staging.buffer)
+        staging = gpu::createBuffer(context_, bucketFrames_.size + visible_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                    gpu::MemoryUse::HostUpload, "visible lists (CPU culling upload)");
+    return staging;
+}
+
+LodCounts DrawLists::countsOf(std::uint32_t frameSlot) const {
+    LodCounts counts;
+    const auto* frames = static_cast<const gpu::BucketFrame*>(readback_[frameSlot].mapped);
+    for (std::size_t b = 0; b < buckets_.size(); ++b) {
+        const std::uint32_t lod = buckets_[b].list.y;
+        counts.characters[lod] += frames[b].count;
+        counts.triangles[lod] += static_cast<std::uint64_t>(frames[b].count) * (buckets_[b].mesh.y / 3);
+    }
+    return counts;
+}
+
+VkDeviceSize DrawLists::bytes() const {
+    VkDeviceSize total = 0;
+    for (const gpu::Buffer* buffer : {&lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_,
+                                      &visible_, &totals_, &bucketFrames_, &bucketRecords_})
+        total += buffer->size;
+    return total;
+}
+
+}  // namespace render

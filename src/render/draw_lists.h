@@ -1,0 +1,88 @@
+#pragma once
+// What culling writes and every later pass reads, on the GPU: per (model, LOD) bucket the list of
+// visible characters and their count; the bases that place each bucket's characters in the skinned
+// vertex buffer and in the compacted draw list; the indirect draw and dispatch commands; each
+// character's last level of detail (for hysteresis).
+//
+// Skinned vertices are dense: visible character k of bucket b has its vertices at
+// frame[b].vertexBase + k x (vertices of b's LOD), so skinning work and memory traffic follow what
+// is visible. The buffers that hold them are sized for the worst case (every character visible at
+// LOD 0), since the CPU never learns this frame's counts.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/buffer.h"
+#include "gpu_types.h"
+#include "render/crowd_buffers.h"
+#include "render/geometry_pool.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+// Characters a compute-skinning workgroup takes at once: their bones must fit the shared memory,
+// kept under 16 KiB so several workgroups share a multiprocessor. Throws when one character's
+// bones do not fit at all.
+std::uint32_t skinningCharactersPerGroup(const gpu::VulkanContext& context, std::uint32_t joints);
+
+// Visible characters and triangles of a finished frame, per level of detail.
+struct LodCounts {
+    std::uint32_t characters[LOD_COUNT] = {};
+    std::uint64_t triangles[LOD_COUNT] = {};
+    std::uint32_t visible() const { return characters[0] + characters[1] + characters[2]; }
+    std::uint64_t totalTriangles() const { return triangles[0] + triangles[1] + triangles[2]; }
+};
+
+class DrawLists {
+public:
+    DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
+              std::uint32_t framesInFlight);
+    ~DrawLists();
+    DrawLists(const DrawLists&) = delete;
+    DrawLists& operator=(const DrawLists&) = delete;
+
+    // Device bytes these lists take for a crowd of this size and bucket count (checked before allocating).
+    static std::uint64_t bytesFor(std::uint64_t characters, std::uint32_t buckets);
+
+    std::uint32_t bucketCount() const { return static_cast<std::uint32_t>(buckets_.size()); }
+    const std::vector<gpu::BucketRecord>& buckets() const { return buckets_; }
+    // Skinned vertices when every character is visible at LOD 0: what a per-frame skinned buffer holds.
+    std::uint64_t skinnedCapacity() const { return skinnedCapacity_; }
+    // Skinned vertices of every character at every LOD, each in its own slot (the static method).
+    std::uint64_t fixedCapacity() const { return fixedCapacity_; }
+
+    const gpu::Buffer& bucketRecords() const { return bucketRecords_; }
+    const gpu::Buffer& bucketFrames() const { return bucketFrames_; }
+    const gpu::Buffer& totals() const { return totals_; }
+    const gpu::Buffer& visible() const { return visible_; }
+    const gpu::Buffer& draws() const { return draws_; }
+    const gpu::Buffer& characterDraws() const { return characterDraws_; }
+    const gpu::Buffer& bucketDraws() const { return bucketDraws_; }
+    const gpu::Buffer& skinDispatches() const { return skinDispatches_; }
+    const gpu::Buffer& lodState() const { return lodState_; }
+    const gpu::Buffer& readback(std::uint32_t frameSlot) const { return readback_[frameSlot]; }
+    // Where the CPU path writes a frame's counts and lists before they are copied to the GPU.
+    const gpu::Buffer& cpuStaging(std::uint32_t frameSlot);
+    std::uint32_t characterCount() const { return characterCount_; }
+
+    // The counts of the frame whose readback copy landed in this slot (after its fence).
+    LodCounts countsOf(std::uint32_t frameSlot) const;
+    VkDeviceSize bytes() const;
+
+private:
+    void release();
+
+    const gpu::VulkanContext& context_;
+    std::vector<gpu::BucketRecord> buckets_;
+    std::uint32_t characterCount_;
+    std::uint64_t skinnedCapacity_, fixedCapacity_;  // set by planBuckets, before this line runs
+    gpu::Buffer bucketRecords_, bucketFrames_, totals_, visible_, draws_, characterDraws_, bucketDraws_,
+        skinDispatches_, lodState_;
+    std::vector<gpu::Buffer> readback_;
+    std::vector<gpu::Buffer> cpuStaging_;
+};
+
+}  // namespace render

@@ -1,0 +1,69 @@
+#include "skin/fragment_skin_pass.h"
+
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "render/crowd_buffers.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
+#include "skin_fragment.vert.spv.h"
+
+namespace skin {
+
+FragmentSkinPass::FragmentSkinPass(const MethodSetup& setup, const SkinnedVertexBuffer& skinned,
+                                   std::span<const std::uint32_t> fragmentShader, std::vector<VkFormat> colorFormats)
+    : context_(setup.context),
+      bucketCount_(setup.lists.bucketCount()),
+      layout_(planSkinTargets(setup.lists.skinnedCapacity(), maxSkinTargetDimension(setup.context, setup.maxTargetDimension))) {
+    try {
+        constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const VkDeviceSize half = skinned.streamBytes();
+        const gpu::BufferBinding bindings[] = {{storage, setup.pool.bindVertices().buffer},
+                                               {storage, setup.crowd.bones().buffer},
+                                               {storage, skinned.buffer(), 0, half},
+                                               {storage, skinned.buffer(), half, half},
+                                               {storage, setup.crowd.characters().buffer},
+                                               {storage, setup.lists.bucketRecords().buffer},
+                                               {storage, setup.lists.bucketFrames().buffer},
+                                               {storage, setup.lists.visible().buffer}};
+        descriptors_ = std::make_unique<gpu::DescriptorBundle>(
+            context_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, bindings);
+        const VkDescriptorSetLayout setLayout = descriptors_->layout();
+        const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                       sizeof(gpu::SkinPassParams)};
+        pipelineLayout_ = gpu::createPipelineLayout(context_, {&setLayout, 1}, {&push, 1});
+        gpu::GraphicsPipelineDesc desc;
+        desc.vertexShader = skin_fragment_vert_spv;
+        desc.fragmentShader = fragmentShader;
+        desc.colorFormats = std::move(colorFormats);
+        desc.layout = pipelineLayout_;
+        desc.cullMode = VK_CULL_MODE_NONE;
+        pipeline_ = gpu::createGraphicsPipeline(context_, desc);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+FragmentSkinPass::~FragmentSkinPass() { release(); }
+
+void FragmentSkinPass::release() {
+    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
+    if (pipelineLayout_) vkDestroyPipelineLayout(context_.device, pipelineLayout_, nullptr);
+    pipeline_ = VK_NULL_HANDLE, pipelineLayout_ = VK_NULL_HANDLE;
+    descriptors_.reset();
+}
+
+void FragmentSkinPass::recordTile(VkCommandBuffer cmd, std::uint32_t tile) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    const VkDescriptorSet set = descriptors_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
+    const VkExtent2D extent = layout_.tileExtent(tile);
+    gpu::setViewportAndScissor(cmd, extent);
+    gpu::SkinPassParams params{};
+    params.target = glm::uvec4(layout_.width, layout_.firstRow(tile), extent.height, 0u);
+    vkCmdPushConstants(cmd, pipelineLayout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof params,
+                       &params);
+    vkCmdDraw(cmd, 6, bucketCount_, 0, 0);
+}
+
+}  // namespace skin
