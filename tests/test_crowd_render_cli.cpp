@@ -93,3 +93,36 @@ TEST(CrowdRenderCli, MissingVulkanDeviceIsReported) {
     expectOneLineError("--device 99 --count 1 --frames 1 --out " + tempFile("nodev.png"), "--device");
     expectOneLineError("--device NoSuchGpu --count 1 --frames 1 --out " + tempFile("nodev.png"), "NoSuchGpu");
 }
+
+TEST(CrowdRenderCli, BadScenesAndLodSettingsAreRejected) {
+    expectOneLineError("--scene nowhere", "nowhere");
+    expectOneLineError("--lod-thresholds 50,150", "out of order");
+    expectOneLineError("--lod-thresholds 100", "--lod-thresholds");
+    expectOneLineError("--lod-thresholds 100,0", "out of order");
+    expectOneLineError("--lod maybe", "--lod");
+    expectOneLineError("--cull sometimes", "--cull");
+    expectOneLineError("--lod-hysteresis 0.9", "--lod-hysteresis");
+    expectOneLineError("--model soldier:0", "weight");
+    expectOneLineError("--model soldier,,horse", "empty model name");
+    expectOneLineError("--scene stress --count 16777216 --frames 1 --out " + tempFile("stress.png"), "device memory");
+}
+
+TEST(CrowdRenderCli, MixedSceneReportsCharactersPerLodAndTheCullPass) {
+    const std::string png = tempFile("mixed.png"), json = tempFile("mixed.json");
+    const test::ProgramResult r = test::runProgram(
+        kRender, "--scene mixed --count 48 --frames 2 --size 96x64 --validation --out " + png + " --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream file(json);
+    const nlohmann::json j = nlohmann::json::parse(file);
+    EXPECT_EQ(j["scene"], "mixed");
+    EXPECT_EQ(j["model"], "soldier+horse");
+    EXPECT_EQ(j["characters"], 48);
+    EXPECT_TRUE(j["median_gpu_ms"].contains("cull"));
+    const double visible = j["median_visible_per_lod"][0].get<double>() + j["median_visible_per_lod"][1].get<double>() +
+                           j["median_visible_per_lod"][2].get<double>();
+    EXPECT_GT(visible, 0.0);
+    EXPECT_LE(visible, 48.0);
+    EXPECT_GT(j["median_triangles"].get<double>(), 0.0);
+    std::filesystem::remove(png);
+    std::filesystem::remove(json);
+}

@@ -61,7 +61,11 @@ SkinError compareWithCpu(const gpu::VulkanContext& context, const model::Skinned
     std::vector<gpu::BoneRows> bones(model.skeleton.jointCount());
     const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(context, renderer);
     EXPECT_EQ(drawn.size(), crowd.size()) << "every character is in view";
+    const std::uint32_t expectedLod = !cull.lod ? 0u : cull.lodThresholds[1] > 1e4f ? 2u : cull.lodThresholds[0] > 1e4f ? 1u : 99u;
     for (const auto& [c, where] : drawn) {
+        if (expectedLod != 99u) {
+            EXPECT_EQ(where.lod, expectedLod) << "character " << c;
+        }
         EXPECT_EQ(where.vertexCount, render::lodsOf(model)[where.lod].vertexCount);
         crowd.animateCharacter(c, time, bones);
         const std::vector<skin::CpuSkinnedVertex> expected = skin::skinOnCpu(model, bones);
@@ -115,6 +119,25 @@ TEST_F(GpuTest, DirectFragmentAndComputeSkinningMatchCpuReference) {
         expectPassOneMatchesCpu(*context, model, 256, skin::Method::TwoPassDirect);  // tiled
         expectPassOneMatchesCpu(*context, model, 0, skin::Method::Compute);
         expectPassOneMatchesCpu(*context, model, 0, skin::Method::Static);  // skins its first frame
+    }
+}
+
+TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
+    // Thresholds no character reaches (LOD 2) or that every character passes but the first (LOD 1).
+    render::CullSettings lod1, lod2;
+    lod1.mode = lod2.mode = render::CullMode::Off;
+    lod1.lodThresholds[0] = 1e6f, lod1.lodThresholds[1] = 1e-3f;
+    lod2.lodThresholds[0] = 1e6f, lod2.lodThresholds[1] = 1e5f;
+    for (const char* name : {"soldier", "horse"}) {
+        const model::SkinnedModel model = app::loadModel(name, 1);
+        const crowd::Crowd crowd(model, mixedCharacters(model, 6));
+        for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
+            for (const render::CullSettings& cull : {lod1, lod2}) {
+                const SkinError error = compareWithCpu(*context, model, crowd, 0, method, cull);
+                EXPECT_LE(error.position, 1e-5 * model.height()) << name << " " << skin::methodName(method);
+                EXPECT_LE(error.normal, 1e-5) << name << " " << skin::methodName(method);
+            }
+        }
     }
 }
 

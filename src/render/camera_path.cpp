@@ -19,13 +19,12 @@ float pingPong(float seconds) {
 Camera flyOver(const CrowdShape& crowd, float seconds) {
     Camera camera;
     const float h = crowd.characterHeight;
-    const float extent = crowd.radius * 0.75f;
-    const glm::vec3 from = crowd.center + glm::vec3(-extent, 0.0f, extent);
-    const glm::vec3 to = crowd.center + glm::vec3(extent, 0.0f, -extent);
-    const float t = pingPong(seconds);
-    const glm::vec3 ground = glm::mix(from, to, t);
-    // Forward along the flight; looking back the other way on the return leg would cut the view.
-    const glm::vec3 forward = glm::normalize(to - from);
+    // A circle over the crowd, looking ahead along the flight and down: near characters pass below,
+    // far ones stay in view, and the ones behind are culled.
+    const float angle = 2.0f * kPi * seconds / kPeriod;
+    const float r = 0.55f * crowd.radius;
+    const glm::vec3 ground = crowd.center + glm::vec3(r * std::cos(angle), 0.0f, r * std::sin(angle));
+    const glm::vec3 forward(-std::sin(angle), 0.0f, std::cos(angle));
     camera.eye = ground + glm::vec3(0.0f, 5.0f * h, 0.0f);
     camera.target = camera.eye + forward * (12.0f * h) - glm::vec3(0.0f, 4.5f * h, 0.0f);
     camera.nearPlane = 0.05f * h;

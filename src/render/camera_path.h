@@ -12,7 +12,7 @@ namespace render {
 enum class CameraPath {
     Framed,   // still, a three-quarter view framing the whole crowd
     Orbit,    // circles the crowd at the framed distance, once every 40 s
-    FlyOver,  // flies low across the crowd along its diagonal and back, every 40 s, looking ahead and down
+    FlyOver,  // flies a circle low over the crowd every 40 s, looking ahead and down
     Descend,  // from high over the whole crowd down to eye level inside it and back up, every 40 s
 };
 const char* cameraPathName(CameraPath path);

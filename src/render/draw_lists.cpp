@@ -63,7 +63,7 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
     const VkDeviceSize n = std::max(characterCount_, 1u);
     const VkDeviceSize b = buckets_.size();
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    constexpr VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    constexpr VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     // Transfer source too: tests and tools read the lists back.
     constexpr VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     constexpr auto device = gpu::MemoryUse::DeviceLocal;
