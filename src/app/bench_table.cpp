@@ -66,18 +66,18 @@ void printTable1(const std::vector<BenchResult>& results, const std::vector<std:
 
 void printPassTable(const std::vector<BenchResult>& results) {
     std::printf("\nPer pass (GPU ms, median) and cost of skinning relative to the static ceiling\n");
-    std::printf("%-8s %-16s %8s %9s %9s %7s %8s %8s %8s %8s %8s %9s %9s %10s %22s %8s  %s\n", "model", "method", "chars",
+    std::printf("%-14s %-16s %8s %9s %9s %7s %8s %8s %8s %8s %8s %9s %9s %10s %22s %8s  %s\n", "model", "method", "chars",
                 "frame ms", "p95 ms", "/static", "upload", "cull", "skin", "copy", "draw", "Gvert/s", "cpu anim", "memory",
                 "drawn at LOD 0/1/2", "M tris", "pass clock");
     for (const BenchResult& r : results) {
         if (!r.ok) {
-            std::printf("%-8s %-16s %8u  skipped: %s\n", r.model.c_str(), r.method.c_str(), r.count, r.error.c_str());
+            std::printf("%-14s %-16s %8u  skipped: %s\n", r.model.c_str(), r.method.c_str(), r.count, r.error.c_str());
             continue;
         }
         const std::string lods = std::to_string(static_cast<long>(r.frame.medianVisible[0])) + "/" +
                                  std::to_string(static_cast<long>(r.frame.medianVisible[1])) + "/" +
                                  std::to_string(static_cast<long>(r.frame.medianVisible[2]));
-        std::printf("%-8s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s %22s %8.2f  %s\n",
+        std::printf("%-14s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s %22s %8.2f  %s\n",
                     r.model.c_str(), r.method.c_str(), r.count, r.frame.medianFrameMs, r.frame.p95FrameMs,
                     ratioToStatic(results, r), passMs(r, "upload"), passMs(r, "cull"), passMs(r, "skin"),
                     passMs(r, "copy"), passMs(r, "draw"), skinVerticesPerSecond(r) * 1e-9, r.frame.medianAnimateMs,

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# The GPU-driven frame's measurements on a lent GPU machine: the paper's scenes (Fig. 3, 4, 5), the
+# mixed crowd and the stress scaling, every method, 1920x1080, then Table 1 again (1280x720).
+# Expects the Vulkan loader packages in .gl/ and prebuilt binaries plus their shared libraries in
+# .devbin/ (both carried with the call). Everything lands in $OUT/scenes.tgz (the device tool brings
+# back few files), with a summary on stdout. Two parts, each well inside one call's 10 minutes:
+# Usage: bench/run_scenes.sh scenes|stress [quick]
+set -uo pipefail
+for f in .gl/*.deb; do dpkg -x "$f" /; done
+ldconfig
+export LD_LIBRARY_PATH=$PWD/.devbin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+bin=.devbin
+part=${1:-scenes}
+res=/tmp/$part
+mkdir -p "$res" "${OUT:-/tmp/out}"
+if ! "$bin/crowd-render" --list-devices >"$res/devices.txt" 2>&1 || ! grep -qi nvidia "$res/devices.txt"; then
+  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+  "$bin/crowd-render" --list-devices >"$res/devices.txt" 2>&1
+fi
+cat "$res/devices.txt"
+nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem --format=csv >"$res/nvidia-smi.txt" 2>&1
+frames="--frames 60 --warmup 10"
+[[ "${2:-}" == quick ]] && frames="--frames 5 --warmup 2"
+bench() {  # name, crowd-bench flags...
+  local name=$1; shift
+  echo "== $name: crowd-bench $*" | tee -a "$res/commands.txt"
+  "$bin/crowd-bench" --device NVIDIA $frames --csv "$res/$name.csv" --json "$res/$name.json" "$@" \
+    >"$res/$name.txt" 2>"$res/$name.err"
+  echo "exit $?"
+  grep -A40 "^Per pass" "$res/$name.txt" | cut -c1-200
+}
+hd="--size 1920x1080"
+if [[ $part == scenes ]]; then
+  bench fig3 --scene paper-fig3 $hd
+  bench fig4 --scene paper-fig4 $hd
+  bench fig5 --scene paper-fig5 $hd
+  bench mixed --scene mixed $hd
+  bench table1 --counts 1,16,64,256,1024,2048,4096,16384
+else
+  bench stress-all --scene stress $hd --counts 100000
+  bench stress --scene stress $hd --methods compute,static,vs-instanced --counts 250000,500000,1000000,2000000
+  # Pictures as the H100 draws them (frame 600: 10 s into each camera path).
+  for scene in paper-fig4 paper-fig5 mixed stress; do
+    "$bin/crowd-render" --device NVIDIA --scene "$scene" --method compute --size 1920x1080 --frames 600 \
+      --out "$res/$scene.png" --json "$res/$scene-render.json" >"$res/$scene-render.txt" 2>&1
+  done
+fi
+tar czf "${OUT:-/tmp/out}/$part.tgz" -C "$res" .

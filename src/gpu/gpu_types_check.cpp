@@ -1,0 +1,31 @@
+// The C++ side of shaders/gpu_types.h must lay every struct out as std430 (and, for uniforms, std140)
+// does in GLSL: these asserts fail the build when a member is added with a size or alignment that
+// would make the two disagree.
+#include <cstddef>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu_types.h"
+
+namespace gpu {
+
+static_assert(sizeof(SkinVertex) == 64 && offsetof(SkinVertex, joints) == 32 && offsetof(SkinVertex, weights) == 48);
+static_assert(sizeof(BoneRows) == 48);
+static_assert(sizeof(ModelRecord) == 80 && offsetof(ModelRecord, info) == 48 && offsetof(ModelRecord, sphere) == 64);
+static_assert(sizeof(CharacterRecord) == 48 && offsetof(CharacterRecord, tint) == 16 && offsetof(CharacterRecord, ids) == 32);
+static_assert(sizeof(BucketRecord) == 48 && offsetof(BucketRecord, mesh) == 16 && offsetof(BucketRecord, fixedLayout) == 32);
+// Written with atomics and read one uint at a time: four 4-byte members, an array stride of 16.
+static_assert(sizeof(BucketFrame) == 16 && offsetof(BucketFrame, vertexBase) == 4 && offsetof(BucketFrame, drawBase) == 8);
+// The cull passes write what vkCmdDrawIndexedIndirect(Count) reads.
+static_assert(sizeof(DrawIndexedCommand) == sizeof(VkDrawIndexedIndirectCommand));
+static_assert(offsetof(DrawIndexedCommand, vertexOffset) == offsetof(VkDrawIndexedIndirectCommand, vertexOffset));
+static_assert(offsetof(DrawIndexedCommand, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
+// emitDispatch is read by vkCmdDispatchIndirect: 16-byte aligned after four uints.
+static_assert(sizeof(DrawTotals) == 32 && offsetof(DrawTotals, emitDispatch) == 16);
+static_assert(sizeof(CullUniforms) == 6 * 16 + 4 * 16 && offsetof(CullUniforms, camera) == 96 &&
+              offsetof(CullUniforms, limits) == 144);
+static_assert(sizeof(SkinPassParams) == 32);
+static_assert(offsetof(SceneUniforms, materialFlags) == 112 && offsetof(SceneUniforms, palette) == 128 &&
+              sizeof(SceneUniforms) == 128 + 16 * MAX_MATERIALS);
+
+}  // namespace gpu
