@@ -36,7 +36,8 @@ double ratioToStatic(const std::vector<BenchResult>& results, const BenchResult&
 double skinVerticesPerSecond(const BenchResult& result) {
     const double ms = passMs(result, "skin");
     if (ms <= 0.0 || result.method == "static") return 0.0;
-    return static_cast<double>(result.count) * result.vertices / (ms * 1e-3);
+    // The vertices this frame's visible characters have at their levels (culling and LOD shrink the work).
+    return result.frame.medianSkinnedVertices / (ms * 1e-3);
 }
 
 std::uint64_t memoryBytes(const BenchResult& result) {

@@ -27,7 +27,7 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
     summary.frames = static_cast<std::uint32_t>(stats.size());
     // Never leave every frame out: a short run still reports its last frames.
     const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
-    std::vector<double> intervals, animate, record, total, triangles;
+    std::vector<double> intervals, animate, record, total, triangles, skinned;
     std::vector<double> visible[LOD_COUNT];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
@@ -40,9 +40,11 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
         total.push_back(sum);
         for (int l = 0; l < LOD_COUNT; ++l) visible[l].push_back(frame.lods.characters[l]);
         triangles.push_back(static_cast<double>(frame.lods.totalTriangles()));
+        skinned.push_back(static_cast<double>(frame.lods.skinnedVertices));
     }
     for (int l = 0; l < LOD_COUNT; ++l) summary.medianVisible[l] = median(visible[l]);
     summary.medianTriangles = median(triangles);
+    summary.medianSkinnedVertices = median(skinned);
     summary.measuredFrames = static_cast<std::uint32_t>(stats.size() - first);
     summary.medianFrameMs = median(intervals);
     summary.p95FrameMs = percentile(intervals, 0.95);

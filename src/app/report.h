@@ -20,6 +20,7 @@ struct RunSummary {
     // Medians over the measured frames: visible characters per level of detail, triangles drawn.
     double medianVisible[LOD_COUNT] = {};
     double medianTriangles = 0.0;
+    double medianSkinnedVertices = 0.0;  // visible characters x their LOD's vertices
     std::uint32_t frames = 0;
     std::uint32_t measuredFrames = 0;
     double medianFrameMs = 0.0;   // wall clock between frame starts, after warm-up

@@ -119,6 +119,7 @@ LodCounts DrawLists::countsOf(std::uint32_t frameSlot) const {
         const std::uint32_t lod = buckets_[b].list.y;
         counts.characters[lod] += frames[b].count;
         counts.triangles[lod] += static_cast<std::uint64_t>(frames[b].count) * (buckets_[b].mesh.y / 3);
+        counts.skinnedVertices += static_cast<std::uint64_t>(frames[b].count) * buckets_[b].mesh.z;
     }
     return counts;
 }

@@ -32,6 +32,7 @@ std::uint32_t skinningCharactersPerGroup(const gpu::VulkanContext& context, std:
 struct LodCounts {
     std::uint32_t characters[LOD_COUNT] = {};
     std::uint64_t triangles[LOD_COUNT] = {};
+    std::uint64_t skinnedVertices = 0;  // what a skinning pass skins: visible characters x their LOD's vertices
     std::uint32_t visible() const { return characters[0] + characters[1] + characters[2]; }
     std::uint64_t totalTriangles() const { return triangles[0] + triangles[1] + triangles[2]; }
 };
