@@ -10,12 +10,15 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "model/gltf_loader.h"
+#include "model/lod_builder.h"
 #include "model/procedural_models.h"
 #include "skin/fragment_skinning.h"
 
 namespace app {
 
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
+namespace {
+
+model::SkinnedModel loadMesh(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
     if (name == "soldier") return model::makeSoldier(seed);
     if (name == "horse") return model::makeHorse(seed);
     std::error_code error;
@@ -23,8 +26,6 @@ model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::
         return model::loadGltf(name, notes);
     throw gpu::Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
 }
-
-namespace {
 
 int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
     if (clip.empty()) return -1;
@@ -39,6 +40,12 @@ int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
 }
 
 }  // namespace
+
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
+    model::SkinnedModel model = loadMesh(name, seed, notes);
+    model::buildLods(model);
+    return model;
+}
 
 std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& clip) {
     const int index = resolveClip(model, clip);
