@@ -1,10 +1,11 @@
-// Levels of detail (model::buildLods) for the built-in characters, the shared glTF assets when
-// present, and hand-built meshes too small to simplify.
+// Levels of detail (model::buildLods) and the pose sphere (crowd::computePoseSphere), for the built-in
+// characters, the shared glTF assets when present, and hand-built meshes too small to simplify.
 #include <algorithm>
 #include <array>
 #include <filesystem>
 #include <map>
 #include <numeric>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "app/crowd_app.h"
+#include "crowd/pose_bounds.h"
 #include "model/gltf_loader.h"
 #include "model/lod_builder.h"
 #include "model/procedural_models.h"
@@ -41,7 +43,7 @@ SkinnedModel original(const Character& c) {
     return model::loadGltf(assetPath(c));
 }
 
-// app::loadModel builds the levels for each load; the tests share one load per character.
+// app::loadModel builds levels and sphere for each load; the tests share one load per character.
 const SkinnedModel& loaded(const Character& c) {
     static std::map<std::string, SkinnedModel> cache;
     auto it = cache.find(c.name);
@@ -208,6 +210,30 @@ TEST_P(LodOf, BuildingTwiceGivesTheSameLevels) {
     EXPECT_EQ(test::originalVertexOf(first, second), sameOrder);
 }
 
+// ---- The pose sphere --------------------------------------------------------------------------
+
+TEST_P(LodOf, PoseSphereHoldsEveryVertexAtRandomTimesOfEveryClipButIsNotLoose) {
+    const glm::dvec3 center(m().poseSphere);
+    const double radius = m().poseSphere.w;
+    ASSERT_GT(radius, 0.0);
+    // Times drawn at random are (almost surely) none of the sphere's samples.
+    std::mt19937 random(20240611);
+    double farthest = 0.0;
+    for (std::uint32_t clip = 0; clip <= m().clips.size(); ++clip) {  // clips.size(): the rest pose
+        const float duration = clip < m().clips.size() ? m().clips[clip].duration : 0.0f;
+        std::uniform_real_distribution<float> times(0.0f, duration);
+        for (int sample = 0; sample < 40; ++sample) {
+            const float time = times(random);
+            for (const skin::CpuSkinnedVertex& v : app::poseOnCpu(m(), clip, time)) {
+                const double distance = glm::length(v.position - center);
+                ASSERT_LE(distance, radius) << "clip " << clip << " at " << time << " s";
+                farthest = std::max(farthest, distance);
+            }
+        }
+    }
+    EXPECT_LT(radius, 1.5 * farthest);
+}
+
 INSTANTIATE_TEST_SUITE_P(Characters, LodOf,
                          testing::Values(Character{"soldier", ""}, Character{"horse", ""},
                                          Character{"Fox", "fox/Fox.glb"},
@@ -219,7 +245,7 @@ INSTANTIATE_TEST_SUITE_P(Characters, LodOf,
 
 namespace {
 
-// A rigid mesh on one joint.
+// A rigid mesh on one joint (the pose sphere needs a skeleton; LODs do not).
 SkinnedModel handBuilt(const std::vector<glm::vec3>& positions, std::vector<std::uint32_t> indices) {
     SkinnedModel m;
     m.skeleton.parents = {-1};
@@ -275,4 +301,18 @@ TEST(LodOfATinyMesh, AMeshWithoutTrianglesHasThreeEmptyLevels) {
     EXPECT_EQ(m.lods[0].vertexCount, 1u);
     for (std::size_t l = 1; l < 3; ++l) EXPECT_EQ(m.lods[l].vertexCount, 0u);
     for (const model::SkinnedModel::Lod& level : m.lods) EXPECT_TRUE(level.indices.empty());
+}
+
+TEST(PoseSphere, OfAStillMeshIsItsBoxsCircumsphereWithTheMargin) {
+    // No clips: only the rest pose, a unit square in the xy plane centred on (0.5, 0.5, 0).
+    const SkinnedModel m = handBuilt({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 1, 2, 0, 2, 3});
+    const glm::vec4 sphere = crowd::computePoseSphere(m);
+    EXPECT_FLOAT_EQ(sphere.x, 0.5f);
+    EXPECT_FLOAT_EQ(sphere.y, 0.5f);
+    EXPECT_FLOAT_EQ(sphere.z, 0.0f);
+    EXPECT_FLOAT_EQ(sphere.w, 1.01f * std::sqrt(0.5f));
+}
+
+TEST(PoseSphere, OfAModelWithoutVerticesIsZero) {
+    EXPECT_EQ(crowd::computePoseSphere(SkinnedModel{}), glm::vec4(0.0f));
 }

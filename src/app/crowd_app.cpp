@@ -6,6 +6,7 @@
 #include "anim/local_to_model.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
+#include "crowd/pose_bounds.h"
 #include "gpu/buffer.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -44,6 +45,7 @@ int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
 model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
     model::SkinnedModel model = loadMesh(name, seed, notes);
     model::buildLods(model);
+    model.poseSphere = crowd::computePoseSphere(model);
     return model;
 }
 
