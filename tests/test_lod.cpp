@@ -18,6 +18,7 @@
 #include "model/lod_builder.h"
 #include "model/procedural_models.h"
 #include "skin/cpu_skinning.h"
+#include "support/run_program.h"
 #include "support/vertex_matching.h"
 
 namespace {
@@ -315,4 +316,19 @@ TEST(PoseSphere, OfAStillMeshIsItsBoxsCircumsphereWithTheMargin) {
 
 TEST(PoseSphere, OfAModelWithoutVerticesIsZero) {
     EXPECT_EQ(crowd::computePoseSphere(SkinnedModel{}), glm::vec4(0.0f));
+}
+
+// ---- crowd-render --list-clips ---------------------------------------------------------------------
+
+TEST(LodListing, ListClipsPrintsEveryLevelAndThePoseSphere) {
+    const test::ProgramResult r = test::runProgram(CROWD_RENDER_BINARY, "--model soldier --list-clips");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const SkinnedModel& soldier = loaded({"soldier", ""});
+    for (std::size_t l = 0; l < soldier.lods.size(); ++l) {
+        const std::string line = "LOD " + std::to_string(l) + ": " + std::to_string(soldier.lods[l].indices.size() / 3) +
+                                 " triangles, " + std::to_string(soldier.lods[l].vertexCount) + " vertices";
+        EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+    }
+    EXPECT_NE(r.out.find("LOD 0: 1080 triangles, 810 vertices"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("pose sphere: centre ("), std::string::npos) << r.out;
 }
