@@ -8,10 +8,12 @@
 #include "anim/local_to_model.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
+#include "crowd/pose_bounds.h"
 #include "gpu/buffer.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "model/gltf_loader.h"
+#include "model/lod_builder.h"
 #include "model/procedural_models.h"
 #include "render/crowd_buffers.h"
 #include "render/draw_lists.h"
@@ -20,7 +22,9 @@
 
 namespace app {
 
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
+namespace {
+
+model::SkinnedModel loadMesh(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
     if (name == "soldier") return model::makeSoldier(seed);
     if (name == "horse") return model::makeHorse(seed);
     std::error_code error;
@@ -28,8 +32,6 @@ model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::
         return model::loadGltf(name, notes);
     throw gpu::Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
 }
-
-namespace {
 
 int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
     if (clip.empty()) return -1;
@@ -44,6 +46,13 @@ int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
 }
 
 }  // namespace
+
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
+    model::SkinnedModel model = loadMesh(name, seed, notes);
+    model::buildLods(model);
+    model.poseSphere = crowd::computePoseSphere(model);
+    return model;
+}
 
 std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& clip) {
     const int index = resolveClip(model, clip);

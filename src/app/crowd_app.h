@@ -19,7 +19,8 @@ namespace app {
 
 // "soldier", "horse", or a glTF 2.0 file: a name ending in .gltf or .glb, or any existing file.
 // Throws gpu::Error for anything else and for a file that cannot be loaded. Notes on what a glTF
-// file had that the character leaves out are appended to `notes` when given.
+// file had that the character leaves out are appended to `notes` when given. The model comes with its
+// levels of detail (model::buildLods, which reorders its vertices) and its pose sphere.
 model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr);
 
 // The clip `clip` names (by name, or by index), or the crowd's default clip when `clip` is empty.

@@ -47,6 +47,11 @@ int listClips(const app::RenderOptions& options) {
     const model::SkinnedModel model = loadAndNote(options);
     std::printf("%s: %zu joints, %zu vertices, %zu triangles, height %.4g\n", model.name.c_str(),
                 model.skeleton.jointCount(), model.vertices.size(), model.triangleCount(), model.height());
+    for (std::size_t l = 0; l < model.lods.size(); ++l)
+        std::printf("  LOD %zu: %zu triangles, %u vertices\n", l, model.lods[l].indices.size() / 3,
+                    model.lods[l].vertexCount);
+    std::printf("  pose sphere: centre (%.4g, %.4g, %.4g), radius %.4g\n", model.poseSphere.x, model.poseSphere.y,
+                model.poseSphere.z, model.poseSphere.w);
     std::printf("%zu clip(s):\n", model.clips.size());
     for (std::size_t i = 0; i < model.clips.size(); ++i)
         std::printf("  %zu: %s (%.4f s)\n", i, model.clips[i].name.c_str(), model.clips[i].duration);

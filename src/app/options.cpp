@@ -46,7 +46,7 @@ usage: crowd-render [options]
   --seed N                seed of the crowd's layout, phases and speeds (default 1)
   --validation            enable the Khronos validation layer (with synchronization checks)
   --list-devices          print the Vulkan devices and exit
-  --list-clips            print the model's clips, joints, vertices and triangles and exit (no GPU)
+  --list-clips            print the model, its levels of detail, pose sphere and clips and exit (no GPU)
   --export-pose FILE.obj  write one character's skinned mesh at --clip and --time as OBJ and exit (no GPU)
   --time SECONDS          time into the clip for --export-pose (default 0; clips loop)
   --help                  print this help and exit

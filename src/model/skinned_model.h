@@ -48,8 +48,8 @@ struct SkinnedModel {
         std::uint32_t vertexCount = 0;
     };
     std::vector<Lod> lods;
-    // A sphere in model space holding every vertex in every pose of every clip (and the bind pose):
-    // xyz centre, w radius (model/pose_bounds.h). Culling tests it; zero until computed.
+    // A sphere in model space holding every vertex in every pose of every clip (and the rest pose):
+    // xyz centre, w radius (crowd/pose_bounds.h). Culling tests it; zero until computed.
     glm::vec4 poseSphere{0.0f};
 
     std::size_t triangleCount() const { return indices.size() / 3; }
