@@ -37,12 +37,18 @@ if [[ $part == scenes ]]; then
   bench mixed --scene mixed $hd
   bench table1 --counts 1,16,64,256,1024,2048,4096,16384
 else
+  # 100,000 soldiers from high over the crowd (the whole crowd in view), every method; then the
+  # largest crowds that hold 60 fps seen from above (t = 0 s) and from inside the crowd (t = 20 s).
   bench stress-all --scene stress $hd --counts 100000
-  bench stress --scene stress $hd --methods compute,static,vs-instanced --counts 250000,500000,1000000,2000000
+  bench stress-over --scene stress $hd --methods compute,static --counts 25000,50000,75000
+  bench stress-inside --scene stress $hd --start 20 --methods compute,static,vs-instanced \
+    --counts 100000,250000,500000,1000000,2000000
   # Pictures as the H100 draws them (frame 600: 10 s into each camera path).
-  for scene in paper-fig4 paper-fig5 mixed stress; do
+  for scene in paper-fig3 paper-fig4 paper-fig5 mixed stress; do
     "$bin/crowd-render" --device NVIDIA --scene "$scene" --method compute --size 1920x1080 --frames 600 \
       --out "$res/$scene.png" --json "$res/$scene-render.json" >"$res/$scene-render.txt" 2>&1
   done
+  "$bin/crowd-render" --device NVIDIA --scene stress --start 20 --method compute --size 1920x1080 --frames 60 \
+    --out "$res/stress-inside.png" --json "$res/stress-inside-render.json" >"$res/stress-inside-render.txt" 2>&1
 fi
 tar czf "${OUT:-/tmp/out}/$part.tgz" -C "$res" .

@@ -62,7 +62,7 @@ void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd
 // Where the crowd stands, for camera paths.
 render::CrowdShape crowdShape(const crowd::Crowd& crowd);
 
-// Animation time of frame `index`: a fixed 60 Hz step, so runs are reproducible.
-inline float frameTime(std::uint32_t index) { return static_cast<float>(index) / 60.0f; }
+// Animation time of frame `index`: a fixed 60 Hz step from `start` seconds, so runs are reproducible.
+inline float frameTime(std::uint32_t index, float start = 0.0f) { return start + static_cast<float>(index) / 60.0f; }
 
 }  // namespace app

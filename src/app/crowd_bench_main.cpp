@@ -31,6 +31,7 @@ usage: crowd-bench [options]
                        --counts is given
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
+  --start SECONDS      scene time of the first frame (where on the scene's camera path to measure)
   --models LIST        comma-separated models, each measured alone (default soldier,horse)
   --methods LIST       comma-separated methods (default vs,vs-instanced,two-pass,two-pass-direct,compute,static)
   --counts LIST        comma-separated crowd sizes (default 1,16,64,256,1024,2048,4096)
@@ -82,7 +83,7 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     BenchOptions o;
-    bool sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
+    bool startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
     for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& flag = args[i];
@@ -96,12 +97,17 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         else if (flag == "--scene") {
             const app::ScenePreset& preset = app::findScenePreset(next());
             const render::CullSettings keep = o.scene.cull;
+            const float keepStart = o.scene.startSeconds;
             o.scene = app::parseRenderOptions({"--scene", preset.name});
             if (lodGiven) o.scene.cull.lod = keep.lod;
             if (cullGiven) o.scene.cull.mode = keep.mode;
+            if (startGiven) o.scene.startSeconds = keepStart;
             if (!modelsGiven) o.models = {preset.models};
             if (!countsGiven) o.counts = {preset.count};
             sceneGiven = true;
+        } else if (flag == "--start") {
+            o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, 1e6f);
+            startGiven = true;
         } else if (flag == "--lod") {
             o.scene.cull.lod = app::parseRenderOptions({"--lod", next()}).cull.lod;
             lodGiven = true;
@@ -203,9 +209,9 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    std::printf("scene %s: culling %s, LOD %s, camera %s\n", options.scene.scene.scene.c_str(),
+    std::printf("scene %s: culling %s, LOD %s, camera %s from %.1f s\n", options.scene.scene.scene.c_str(),
                 render::cullModeName(options.scene.cull.mode), options.scene.cull.lod ? "on" : "off",
-                render::cameraPathName(options.scene.camera));
+                render::cameraPathName(options.scene.camera), options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);
     app::printPassTable(results);
 

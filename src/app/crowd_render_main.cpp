@@ -101,8 +101,9 @@ int run(const app::RenderOptions& options) {
     const render::CrowdShape shape = app::crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     for (std::uint32_t frame = 0; frame < options.frames; ++frame) {
-        renderer.camera = render::cameraOnPath(options.camera, shape, aspect, app::frameTime(frame));
-        renderer.renderFrame(app::frameTime(frame));
+        const float time = app::frameTime(frame, options.startSeconds);
+        renderer.camera = render::cameraOnPath(options.camera, shape, aspect, time);
+        renderer.renderFrame(time);
     }
     render::writePng(options.out, renderer.readback());
 

@@ -28,6 +28,7 @@ struct RenderOptions {
     SceneOptions scene;
     render::CullSettings cull;
     render::CameraPath camera = render::CameraPath::Framed;
+    float startSeconds = 0.0f;  // scene time of the first frame (where on the camera path a run begins)
     skin::Method method = skin::Method::TwoPass;
     std::uint32_t frames = 30;
     VkExtent2D size{1280, 720};

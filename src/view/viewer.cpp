@@ -89,7 +89,8 @@ int Viewer::run() {
 
         // Scripts step a fixed 1/60 s per frame, as crowd-render does; people see real time.
         if (!controls_.paused) animationTime += seconds * controls_.speed;
-        const float time = options_.scripted ? app::frameTime(frame) : animationTime;
+        const float time = options_.scripted ? app::frameTime(frame, options_.render.startSeconds)
+                                             : options_.render.startSeconds + animationTime;
         if (controls_.scenePath) {
             // The scene's camera path, as crowd-render flies it (frame N of a script is its frame N).
             const VkExtent2D extent = swapchain_.extent();
