@@ -93,3 +93,56 @@ TEST(CrowdRenderCli, MissingVulkanDeviceIsReported) {
     expectOneLineError("--device 99 --count 1 --frames 1 --out " + tempFile("nodev.png"), "--device");
     expectOneLineError("--device NoSuchGpu --count 1 --frames 1 --out " + tempFile("nodev.png"), "NoSuchGpu");
 }
+
+namespace {
+
+std::string readText(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+// A run that failed to write `path` exits 1 with one line naming it.
+void expectWriteFailure(const test::ProgramResult& r, const std::string& path) {
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("crowd-render: cannot write " + path + ": ", 0), 0u) << r.err;
+}
+
+}  // namespace
+
+TEST(CrowdRenderCli, WritesToAFullDeviceFailNamingTheFile) {
+    const std::string scene = "--count 4 --frames 1 --size 96x64";
+    const test::ProgramResult png = test::runProgram(kRender, scene + " --out /dev/full");
+    expectWriteFailure(png, "/dev/full");
+    EXPECT_EQ(png.out.find("wrote"), std::string::npos) << png.out;
+    expectWriteFailure(test::runProgram(kRender, scene + " --out /dev/null --json /dev/full"), "/dev/full");
+}
+
+TEST(CrowdRenderCli, OutputCutShortByAFullDiskLeavesNoFileAndKeepsTheOldOne) {
+    // 320x240 of crowd is tens of KiB of PNG, the JSON about 900 bytes: a 512-byte limit stops both
+    // part way, as a full disk would.
+    const std::string png = tempFile("full-disk.png"), json = tempFile("full-disk.json");
+    const std::string limited = test::withFileSizeLimit(kRender, 1);
+    const std::string scene = "--count 4 --frames 1 --size 320x240";
+    expectWriteFailure(test::runProgram(limited, scene + " --out " + png), png);
+    EXPECT_FALSE(std::filesystem::exists(png));
+    expectWriteFailure(test::runProgram(limited, scene + " --out /dev/null --json " + json), json);
+    EXPECT_FALSE(std::filesystem::exists(json));
+
+    std::ofstream(png) << "the previous run's image";
+    expectWriteFailure(test::runProgram(limited, scene + " --out " + png), png);
+    EXPECT_EQ(readText(png), "the previous run's image");
+    std::filesystem::remove(png);
+    // Nothing else is left beside them either (the temporary files are removed).
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+        EXPECT_EQ(entry.path().filename().string().find("crowd-cli-" + std::to_string(::getpid()) + "-full-disk"),
+                  std::string::npos)
+            << entry.path();
+}
+
+TEST(CrowdRenderCli, ExportPoseCutShortLeavesNoFile) {
+    const std::string obj = tempFile("full-disk.obj");
+    expectWriteFailure(test::runProgram(test::withFileSizeLimit(kRender, 1), "--export-pose " + obj), obj);
+    EXPECT_FALSE(std::filesystem::exists(obj));
+    expectWriteFailure(test::runProgram(kRender, "--export-pose /dev/full"), "/dev/full");
+}

@@ -316,6 +316,21 @@ TEST(ViewerProgram, ResizedWindowRendersAtItsNewSizeAndEscapeCloses) {
     std::filesystem::remove(script);
 }
 
+TEST(ViewerProgram, ScreenshotThatCannotBeWrittenFailsTheScript) {
+    SKIP_WITHOUT_XVFB();
+    const std::string png = tempFile("cut-short.png");
+    for (const auto& [program, path] : {std::pair{kView, std::string("/dev/full")},
+                                        std::pair{test::withFileSizeLimit(kView, 1), png}}) {
+        const test::ProgramResult r = test::runProgram(
+            xvfbRun() + program, "--count 4 --frames 1 --size 320x240 --no-ui" + deviceFlag() + " --screenshot " + path);
+        EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+        EXPECT_EQ(r.err, "crowd-view: cannot write " + path + ": " +
+                             (path == png ? "File too large" : "No space left on device") + "\n");
+        EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
+    }
+    EXPECT_FALSE(std::filesystem::exists(png));
+}
+
 TEST(ViewerProgram, BadFlagsAndNoDisplayFailWithOneLine) {
     // None of these needs a display: they fail before a window opens.
     struct Case {

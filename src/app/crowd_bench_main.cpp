@@ -14,7 +14,7 @@
 #include "app/options.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
-#include "render/png_writer.h"
+#include "io/output_file.h"
 
 #ifndef CROWD_COMMIT
 #define CROWD_COMMIT "unknown"
@@ -138,8 +138,8 @@ app::BenchResult measure(const gpu::VulkanContext& context, const model::Skinned
 }
 
 int run(const BenchOptions& options, const std::string& command) {
-    if (!options.csv.empty()) render::checkWritable(options.csv);
-    if (!options.json.empty()) render::checkWritable(options.json);
+    if (!options.csv.empty()) io::checkWritable(options.csv);
+    if (!options.json.empty()) io::checkWritable(options.json);
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     const bool fencePasses = options.passClock == "fence" ||
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));

@@ -13,6 +13,7 @@
 #include "app/report.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "io/output_file.h"
 #include "model/obj_export.h"
 #include "render/crowd_renderer.h"
 #include "render/png_writer.h"
@@ -53,7 +54,7 @@ int listClips(const app::RenderOptions& options) {
 
 int exportPose(const app::RenderOptions& options, const PoseFlags& flags) {
     const float time = flags.time.empty() ? 0.0f : parseSeconds(flags.time);
-    render::checkWritable(flags.exportPose);
+    io::checkWritable(flags.exportPose);
     const model::SkinnedModel character = loadAndNote(options);
     const std::uint32_t clip = app::clipIndex(character, options.scene.clip);
     const std::vector<skin::CpuSkinnedVertex> pose = app::poseOnCpu(character, clip, time);
@@ -76,8 +77,8 @@ void listDevices() {
 
 int run(const app::RenderOptions& options) {
     // Check every output before the (possibly long) run, so a bad path fails at once.
-    render::checkWritable(options.out);
-    if (!options.json.empty()) render::checkWritable(options.json);
+    io::checkWritable(options.out);
+    if (!options.json.empty()) io::checkWritable(options.json);
 
     const model::SkinnedModel model = loadAndNote(options);
     gpu::VulkanContext context({options.validation, options.device, {}, false});

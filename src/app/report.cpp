@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "gpu/buffer.h"
-#include "gpu/vulkan_error.h"
+#include "io/output_file.h"
 
 namespace app {
 
@@ -79,10 +78,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["device"] = s.device;
     json["driver"] = s.driver;
     for (const skin::MemoryItem& item : s.memory) json["memory_bytes"][item.what] = item.bytes;
-    std::ofstream file(path);
-    if (!file) throw gpu::Error("cannot write " + path);
-    file << json.dump(2) << "\n";
-    if (!file) throw gpu::Error("cannot write " + path);
+    io::writeFile(path, json.dump(2) + "\n");
 }
 
 }  // namespace app

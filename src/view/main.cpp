@@ -8,7 +8,7 @@
 
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
-#include "render/png_writer.h"
+#include "io/output_file.h"
 #include "view/viewer.h"
 #include "view/viewer_options.h"
 
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         // A script's only output is checked before the window opens.
-        if (!options.screenshot.empty()) render::checkWritable(options.screenshot);
+        if (!options.screenshot.empty()) io::checkWritable(options.screenshot);
         view::Viewer viewer(options);
         return viewer.run();
     } catch (const gpu::Error& error) {
