@@ -3,6 +3,7 @@
 // deliberately broken files.
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -101,8 +102,124 @@ TEST(GltfBadInput, WrongJsonTypesFailCleanly) {
         }
     }
     EXPECT_GT(failed, 0);
-    expectError(R"({"asset": {"version": "2.0"}, "nodes": 5})", "no skinned mesh");
+    expectError(R"({"asset": {"version": "2.0"}, "nodes": 5})", "nodes: expected an array, found 5");
     expectError(R"([1, 2, 3])", "not a valid glTF file");
+}
+
+TEST(GltfBadInput, ChildrenHoldingAnObjectIsAnErrorNotASmallerSkeleton) {
+    // tinygltf drops a "children" array it cannot read whole: the strip's root would lose its tip
+    // joint and load as a one-bone character.
+    GltfBuilder b = test::stripCharacter();
+    b.doc["nodes"][1]["children"] = {nlohmann::json::object()};
+    expectError(b.gltf(), "test.gltf: nodes[1].children[0]: expected an index (a whole number from 0 to 2147483647), "
+                          "found an object");
+    expectError(b.glb(), "nodes[1].children[0]: expected an index");
+}
+
+namespace {
+
+// "/nodes/0/children" as the loader names it: "nodes[0].children".
+std::string propertyPath(const std::string& pointer) {
+    std::string path;
+    std::size_t start = 1;
+    while (start <= pointer.size()) {
+        const std::size_t end = std::min(pointer.find('/', start), pointer.size());
+        const std::string token = pointer.substr(start, end - start);
+        const bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
+        path += index ? "[" + token + "]" : (path.empty() ? "" : ".") + token;
+        start = end + 1;
+    }
+    return path;
+}
+
+}  // namespace
+
+TEST(GltfBadInput, EveryPropertyTheLoaderReadsMustHaveItsSchemaType) {
+    using nlohmann::json;
+    // Values of every other JSON type for each kind of property. Indices must also fit tinygltf's int
+    // (4294967296 would become 0) and be whole and not negative, as sizes must.
+    const std::map<std::string, std::vector<json>> wrong = {
+        {"index", {"0", 1.5, -1, 4294967296ull, true, nullptr, json::array(), json::object()}},
+        {"size", {"0", 1.5, -1, true, nullptr, json::array(), json::object()}},
+        {"string", {5, true, nullptr, json::array(), json::object()}},
+        {"indices", {5, "0", json::object(), {1.5}, {json::object()}, {"0"}, {-1}}},
+        {"numbers", {5, "0", json::object(), {"1"}, {nullptr}, {json::object()}}},
+        {"object", {5, "x", true, nullptr, json::array()}},
+        {"objects", {5, "x", json::object(), {5}, {"x"}}},
+    };
+    const std::vector<std::pair<std::string, std::string>> properties = {
+        {"/scene", "index"},
+        {"/scenes/0/nodes", "indices"},
+        {"/nodes", "objects"},
+        {"/nodes/0/children", "indices"},
+        {"/nodes/0/translation", "numbers"},
+        {"/nodes/1/name", "string"},
+        {"/nodes/3/mesh", "index"},
+        {"/nodes/3/skin", "index"},
+        {"/skins/0/joints", "indices"},
+        {"/skins/0/inverseBindMatrices", "index"},
+        {"/meshes/0/primitives", "objects"},
+        {"/meshes/0/primitives/0/attributes", "object"},
+        {"/meshes/0/primitives/0/attributes/POSITION", "index"},
+        {"/meshes/0/primitives/0/indices", "index"},
+        {"/meshes/0/primitives/0/material", "index"},
+        {"/materials/0/pbrMetallicRoughness", "object"},
+        {"/materials/0/pbrMetallicRoughness/baseColorFactor", "numbers"},
+        {"/accessors/0/bufferView", "index"},
+        {"/accessors/0/componentType", "size"},
+        {"/accessors/0/count", "size"},
+        {"/accessors/0/type", "string"},
+        {"/bufferViews/0/buffer", "index"},
+        {"/bufferViews/0/byteOffset", "size"},
+        {"/bufferViews/0/byteLength", "size"},
+        {"/buffers/0/byteLength", "size"},
+        {"/buffers/0/uri", "string"},
+        {"/animations/0/name", "string"},
+        {"/animations/0/channels/0/sampler", "index"},
+        {"/animations/0/channels/0/target", "object"},
+        {"/animations/0/channels/0/target/node", "index"},
+        {"/animations/0/channels/0/target/path", "string"},
+        {"/animations/0/samplers/0/input", "index"},
+        {"/animations/0/samplers/0/output", "index"},
+        {"/animations/0/samplers/0/interpolation", "string"},
+    };
+    GltfBuilder strip = test::stripCharacter();
+    strip.doc["buffers"] = {{{"byteLength", strip.bin.size()},
+                             {"uri", "data:application/octet-stream;base64," + test::base64(strip.bin)}}};
+    for (const auto& [pointer, kind] : properties) {
+        ASSERT_TRUE(strip.doc.contains(json::json_pointer(pointer))) << pointer;
+        for (const json& value : wrong.at(kind)) {
+            SCOPED_TRACE(pointer + " = " + value.dump());
+            GltfBuilder b = strip;
+            b.doc[json::json_pointer(pointer)] = value;
+            // The property, or the element of it, that has the wrong type.
+            expectError(b.gltf(false), "test.gltf: " + propertyPath(pointer));
+            expectError(b.gltf(false), ": expected ");
+        }
+    }
+}
+
+TEST(GltfBadInput, MissingRequiredPropertiesAreNamed) {
+    // tinygltf leaves out a primitive without attributes and a channel without a sampler: the mesh or
+    // clip would silently lose them.
+    GltfBuilder b = test::stripCharacter();
+    test::stripPrimitive(b).erase("attributes");
+    expectError(b.gltf(), "meshes[0].primitives[0]: attributes is missing");
+    b = test::stripCharacter();
+    b.doc["animations"][0]["channels"][0].erase("sampler");
+    expectError(b.gltf(), "animations[0].channels[0]: sampler is missing");
+}
+
+TEST(GltfBadInput, ChannelWithoutATargetNodeIsIgnoredWithANote) {
+    // Legal glTF (an extension names what it animates); the loader can ignore it, and says so.
+    GltfBuilder b = test::stripCharacter();
+    b.doc["animations"][0]["channels"].push_back({{"sampler", 0}, {"target", {{"path", "rotation"}}}});
+    std::vector<std::string> notes;
+    const model::SkinnedModel m = test::loadText(b.gltf(), &notes);
+    ASSERT_EQ(m.clips.size(), 1u);
+    EXPECT_EQ(m.clips[0].channels.size(), 1u);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "test.gltf: 1 animation channel(s) without a target node ignored");
 }
 
 TEST(GltfBadInput, AccessorIndexOutOfRange) {

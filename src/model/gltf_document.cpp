@@ -51,7 +51,15 @@ void checkJsonNesting(std::span<const std::uint8_t> json) {
 
 // The bytes to give tinygltf for a GLB file, after checking its header and chunk table against the
 // file's size (tinygltf 2.7 reads up to 8 bytes past a BIN chunk that ends at the end of the file).
-std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& patched) {
+// What tinygltf must not see unchecked in the JSON: its nesting (before any parser recurses into it),
+// then the types of the properties the loader reads.
+void checkJson(std::span<const std::uint8_t> json, std::vector<std::string>& notes) {
+    checkJsonNesting(json);
+    checkJsonTypes(json, notes);
+}
+
+std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& patched,
+                                       std::vector<std::string>& notes) {
     if (bytes.size() < kGlbHeaderBytes + kChunkHeaderBytes)
         fail("truncated GLB: " + std::to_string(bytes.size()) + " bytes is shorter than the GLB header");
     const std::uint32_t version = readU32(bytes, 4);
@@ -65,7 +73,7 @@ std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std:
     if (readU32(bytes, 16) != kJsonChunk) fail("the first GLB chunk is not JSON");
     const std::uint64_t jsonEnd = kGlbHeaderBytes + kChunkHeaderBytes + jsonLength;
     if (jsonLength == 0 || jsonEnd > length) fail("truncated GLB: the JSON chunk runs past the end of the file");
-    checkJsonNesting(bytes.subspan(kGlbHeaderBytes + kChunkHeaderBytes, static_cast<std::size_t>(jsonLength)));
+    checkJson(bytes.subspan(kGlbHeaderBytes + kChunkHeaderBytes, static_cast<std::size_t>(jsonLength)), notes);
 
     bool keepBin = false;
     if (length - jsonEnd >= kChunkHeaderBytes) {
@@ -157,7 +165,7 @@ std::string oneLine(const std::string& text) {
 }  // namespace
 
 tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::filesystem::path& baseDir,
-                              EncodedImages& images) {
+                              EncodedImages& images, std::vector<std::string>& notes) {
     if (bytes.empty()) fail("the file is empty");
     if (bytes.size() > kMaxGltfFileBytes) fail("the file is larger than 1 GiB");
 
@@ -172,11 +180,11 @@ tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::fi
     try {
         if (bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic) {
             std::vector<std::uint8_t> patched;
-            const std::span<const std::uint8_t> glb = checkGlb(bytes, patched);
+            const std::span<const std::uint8_t> glb = checkGlb(bytes, patched, notes);
             ok = parser.LoadBinaryFromMemory(&model, &error, &warning, glb.data(),
                                              static_cast<unsigned int>(glb.size()), baseDir.string());
         } else {
-            checkJsonNesting(bytes);
+            checkJson(bytes, notes);
             ok = parser.LoadASCIIFromString(&model, &error, &warning, reinterpret_cast<const char*>(bytes.data()),
                                             static_cast<unsigned int>(bytes.size()), baseDir.string());
         }

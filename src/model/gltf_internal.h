@@ -25,11 +25,17 @@ namespace model::gltf {
 // live in buffer views stay there; see decodeBaseColorTexture).
 using EncodedImages = std::map<int, std::vector<std::uint8_t>>;
 
-// Parses a .gltf (JSON) or .glb document. Checks the GLB container and the JSON nesting before
-// tinygltf sees them, reads external files only from `baseDir` (none when empty), and leaves images
-// encoded in `images`.
+// Parses a .gltf (JSON) or .glb document. Checks the GLB container, the JSON nesting and the JSON
+// types before tinygltf sees them, reads external files only from `baseDir` (none when empty), and
+// leaves images encoded in `images`.
 tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::filesystem::path& baseDir,
-                              EncodedImages& images);
+                              EncodedImages& images, std::vector<std::string>& notes);
+
+// Checks that every property the loader reads has the JSON type the glTF schema gives it (tinygltf
+// drops what it cannot parse, silently changing the character); fails naming the property by its
+// path, e.g. "nodes[2].children[0]: expected an index ..., found an object". Notes what the loader
+// can ignore (channels that target no node). (gltf_json_types.cpp)
+void checkJsonTypes(std::span<const std::uint8_t> json, std::vector<std::string>& notes);
 
 // ---- accessors (gltf_accessors.cpp) ----
 

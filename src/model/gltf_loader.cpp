@@ -98,7 +98,7 @@ void computeSkinnedBounds(SkinnedModel& model) {
 SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& modelName,
                         const std::filesystem::path& baseDir, std::vector<std::string>& notes) {
     EncodedImages images;
-    const tinygltf::Model document = parseDocument(bytes, baseDir, images);
+    const tinygltf::Model document = parseDocument(bytes, baseDir, images, notes);
     checkRequiredExtensions(document);
     const std::vector<int> parents = nodeParents(document);
     const std::vector<int> meshNodes = skinnedMeshNodes(document, sceneNodes(document));
