@@ -15,12 +15,13 @@
 
 namespace app {
 
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes,
+                              const std::string& assetRoot) {
     if (name == "soldier") return model::makeSoldier(seed);
     if (name == "horse") return model::makeHorse(seed);
     std::error_code error;
     if (model::hasGltfExtension(name) || std::filesystem::is_regular_file(name, error))
-        return model::loadGltf(name, notes);
+        return model::loadGltf(name, notes, assetRoot);
     throw gpu::Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
 }
 

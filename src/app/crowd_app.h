@@ -16,8 +16,10 @@ namespace app {
 
 // "soldier", "horse", or a glTF 2.0 file: a name ending in .gltf or .glb, or any existing file.
 // Throws gpu::Error for anything else and for a file that cannot be loaded. Notes on what a glTF
-// file had that the character leaves out are appended to `notes` when given.
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr);
+// file had that the character leaves out are appended to `notes` when given. A glTF file's external
+// files must lie inside `assetRoot` (--asset-root), or its own folder when empty.
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr,
+                              const std::string& assetRoot = {});
 
 // The clip `clip` names (by name, or by index), or the crowd's default clip when `clip` is empty.
 // Throws gpu::Error listing the model's clips.

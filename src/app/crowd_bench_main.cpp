@@ -26,6 +26,8 @@ const char* kUsage = R"(crowd-bench: measures every skinning method on crowds of
 
 usage: crowd-bench [options]
   --models LIST        comma-separated models (default soldier,horse)
+  --asset-root DIR     let glTF files' buffers and images come from anywhere inside DIR (default:
+                       each file's own folder and below)
   --methods LIST       comma-separated methods (default vs,vs-instanced,two-pass,two-pass-direct,compute,static)
   --counts LIST        comma-separated crowd sizes (default 1,16,64,256,1024,2048,4096)
   --frames N           measured frames per configuration (default 60)
@@ -50,7 +52,7 @@ struct BenchOptions {
     std::vector<std::uint32_t> counts{1, 16, 64, 256, 1024, 2048, 4096};
     std::uint32_t frames = 60, warmup = 10, seed = 1;
     VkExtent2D size{1280, 720};
-    std::string passClock = "auto", csv, json, device;
+    std::string passClock = "auto", csv, json, device, assetRoot;
     bool validation = false, help = false;
 };
 
@@ -76,6 +78,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         else if (flag == "--validation") o.validation = true;
         else if (flag == "--quick") o.counts = {1, 16}, o.frames = 5, o.warmup = 2, o.size = {320, 180};
         else if (flag == "--models") o.models = splitList(flag, next());
+        else if (flag == "--asset-root") o.assetRoot = next();
         else if (flag == "--methods") o.methods = splitList(flag, next());
         else if (flag == "--counts") {
             o.counts.clear();
@@ -150,7 +153,7 @@ int run(const BenchOptions& options, const std::string& command) {
     std::vector<std::string> modelNames;  // as the models name themselves (a file's model is not its path)
     const std::size_t total = options.models.size() * options.methods.size() * options.counts.size();
     for (const std::string& modelName : options.models) {
-        const model::SkinnedModel model = app::loadModel(modelName, options.seed);
+        const model::SkinnedModel model = app::loadModel(modelName, options.seed, nullptr, options.assetRoot);
         modelNames.push_back(model.name);
         for (std::uint32_t count : options.counts)
             for (const std::string& methodName : options.methods) {

@@ -37,7 +37,7 @@ float parseSeconds(const std::string& text) {
 
 model::SkinnedModel loadAndNote(const app::RenderOptions& options) {
     std::vector<std::string> notes;
-    model::SkinnedModel model = app::loadModel(options.scene.model, options.scene.seed, &notes);
+    model::SkinnedModel model = app::loadModel(options.scene.model, options.scene.seed, &notes, options.scene.assetRoot);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     return model;
 }

@@ -22,6 +22,8 @@ const char* renderUsage() {
 usage: crowd-render [options]
   --model soldier|horse|FILE
                           built-in character (default soldier) or a skinned glTF 2.0 file (.gltf/.glb)
+  --asset-root DIR        let a glTF file's buffers and images come from anywhere inside DIR (default:
+                          the file's own folder and below)
   --count N               characters, 1..16777216 (default 1024)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
   --method NAME           skinning method: two-pass (default, the paper's), vs (the paper's baseline),
@@ -81,6 +83,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--list-devices") options.listDevices = true;
         else if (flag == "--validation") options.validation = true;
         else if (flag == "--model") options.scene.model = next();
+        else if (flag == "--asset-root") options.scene.assetRoot = next();
         else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--clip") options.scene.clip = next();
         else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);

@@ -1,8 +1,6 @@
 // The glTF container: checks what tinygltf trusts (the GLB chunk table, JSON nesting, external
 // files) before handing the document to it.
 #include <cstring>
-#include <fstream>
-#include <system_error>
 
 #include "gpu/vulkan_error.h"
 #include "model/gltf_internal.h"
@@ -94,49 +92,6 @@ std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std:
     return patched;
 }
 
-// File-system callbacks: regular files only (a FIFO or a device named by a URI would block or never
-// end), at most kMaxGltfFileBytes in all (a thousand buffers may name one big file), and none at all
-// when the document has no directory.
-struct FileAccess {
-    bool allowed = false;
-    std::uint64_t bytesRead = 0;
-};
-
-bool fileExists(const std::string& path, void* user) {
-    if (!static_cast<FileAccess*>(user)->allowed) return false;
-    std::error_code error;
-    return std::filesystem::is_regular_file(path, error);
-}
-
-std::string expandFilePath(const std::string& path, void*) { return path; }
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    FileAccess& access = *static_cast<FileAccess*>(user);
-    std::error_code error;
-    if (!access.allowed || !std::filesystem::is_regular_file(path, error)) {
-        if (err) *err += "not a readable file: " + path;
-        return false;
-    }
-    const std::uintmax_t size = std::filesystem::file_size(path, error);
-    if (error || size > kMaxGltfFileBytes - access.bytesRead) {
-        if (err) *err += "external files larger than 1 GiB in all: " + path;
-        return false;
-    }
-    access.bytesRead += size;
-    std::ifstream file(path, std::ios::binary);
-    out->resize(static_cast<std::size_t>(size));
-    if (!file || !file.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
-        if (err) *err += "cannot read " + path;
-        return false;
-    }
-    return true;
-}
-
-bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    if (err) *err += "writing is not supported";
-    return false;
-}
-
 // Keeps images encoded; only the one base-colour texture used is decoded later, and only as PNG or
 // JPEG. Images in buffer views are left alone: tinygltf 2.7 hands over their bytes without checking
 // the view against its buffer, so they are read later through bufferViewBytes().
@@ -165,13 +120,14 @@ std::string oneLine(const std::string& text) {
 }  // namespace
 
 tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::filesystem::path& baseDir,
-                              EncodedImages& images, std::vector<std::string>& notes) {
+                              const std::filesystem::path& assetRoot, EncodedImages& images,
+                              std::vector<std::string>& notes) {
     if (bytes.empty()) fail("the file is empty");
     if (bytes.size() > kMaxGltfFileBytes) fail("the file is larger than 1 GiB");
 
-    FileAccess access{!baseDir.empty()};
+    ExternalFiles files(baseDir, assetRoot);
     tinygltf::TinyGLTF parser;
-    parser.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
+    parser.SetFsCallbacks(files.callbacks());
     parser.SetImageLoader(&keepEncodedImage, &images);
 
     tinygltf::Model model;
@@ -195,6 +151,9 @@ tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::fi
     } catch (const std::exception& e) {
         fail(std::string("not a valid glTF file: ") + oneLine(e.what()));
     }
+    // A refused URI fails the file even where tinygltf only warns (images): it is a file asking for
+    // something it may not have, not one that is missing.
+    if (!files.refusal().empty()) fail(oneLine(files.refusal()));
     if (!ok) fail("not a valid glTF file: " + oneLine(error));
     return model;
 }

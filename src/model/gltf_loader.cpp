@@ -96,9 +96,10 @@ void computeSkinnedBounds(SkinnedModel& model) {
 }
 
 SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& modelName,
-                        const std::filesystem::path& baseDir, std::vector<std::string>& notes) {
+                        const std::filesystem::path& baseDir, const std::filesystem::path& assetRoot,
+                        std::vector<std::string>& notes) {
     EncodedImages images;
-    const tinygltf::Model document = parseDocument(bytes, baseDir, images, notes);
+    const tinygltf::Model document = parseDocument(bytes, baseDir, assetRoot, images, notes);
     checkRequiredExtensions(document);
     const std::vector<int> parents = nodeParents(document);
     const std::vector<int> meshNodes = skinnedMeshNodes(document, sceneNodes(document));
@@ -144,11 +145,12 @@ SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& 
 }
 
 SkinnedModel loadNamed(std::span<const std::uint8_t> bytes, const std::string& source, const std::string& modelName,
-                       const std::filesystem::path& baseDir, std::vector<std::string>* notes) {
+                       const std::filesystem::path& baseDir, const std::filesystem::path& assetRoot,
+                       std::vector<std::string>* notes) {
     std::vector<std::string> localNotes;
     SkinnedModel model;
     try {
-        model = buildModel(bytes, modelName, baseDir, localNotes);
+        model = buildModel(bytes, modelName, baseDir, assetRoot, localNotes);
     } catch (const gpu::Error& error) {
         throw gpu::Error(source + ": " + error.what());
     }
@@ -168,10 +170,11 @@ bool hasGltfExtension(const std::filesystem::path& path) {
 
 SkinnedModel loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::string& name,
                                 const std::filesystem::path& baseDir, std::vector<std::string>* notes) {
-    return loadNamed(bytes, name, name, baseDir, notes);
+    return loadNamed(bytes, name, name, baseDir, {}, notes);
 }
 
-SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes) {
+SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes,
+                      const std::filesystem::path& assetRoot) {
     const std::string source = path.string();
     std::error_code error;
     if (!std::filesystem::exists(path, error)) throw gpu::Error(source + ": no such file");
@@ -185,7 +188,7 @@ SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string
         throw gpu::Error(source + ": cannot read the file");
     const std::filesystem::path directory =
         path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    return loadNamed(bytes, source, path.stem().string(), directory, notes);
+    return loadNamed(bytes, source, path.stem().string(), directory, assetRoot, notes);
 }
 
 }  // namespace model

@@ -34,11 +34,18 @@ inline constexpr std::uint32_t kMaxGltfTextureSide = 8192;
 // Loads the character in `path`. Throws gpu::Error with one line naming the file and the problem.
 // Problems that still leave a usable character (an undecodable texture, a second skin, point
 // primitives) are appended to `notes` when given, one line each.
-SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes = nullptr);
+//
+// External buffers and images are read only where their URIs lead, after "..", percent-decoding and
+// symbolic links, inside the asset root: `assetRoot`, or the file's own folder when empty (the
+// programs' --asset-root). A URI that leads outside it, an absolute path and a URI with a scheme
+// (file:, http:) are errors that name the URI; nothing outside is read or measured.
+SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes = nullptr,
+                      const std::filesystem::path& assetRoot = {});
 
 // The same from bytes in memory; `name` names the source in messages and becomes the model's name.
-// External files (buffers, images) resolve against `baseDir`; with an empty `baseDir` a reference to
-// an external file is an error (so fuzzing and tests never touch the file system).
+// External files (buffers, images) resolve against `baseDir`, which is also the asset root; with an
+// empty `baseDir` a reference to an external file is an error (so fuzzing and tests never touch the
+// file system).
 SkinnedModel loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::string& name,
                                 const std::filesystem::path& baseDir = {}, std::vector<std::string>* notes = nullptr);
 

@@ -27,7 +27,8 @@ CrowdScene::CrowdScene(const gpu::VulkanContext& context, const app::SceneOption
 
 void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     std::vector<std::string> notes;
-    auto model = std::make_unique<model::SkinnedModel>(app::loadModel(scene.model, scene.seed, &notes));
+    auto model =
+        std::make_unique<model::SkinnedModel>(app::loadModel(scene.model, scene.seed, &notes, scene.assetRoot));
     std::vector<crowd::Character> characters;
     try {
         characters = app::buildCharacters(*model, scene);
