@@ -1,6 +1,7 @@
 // Malformed glTF files: each gives one gpu::Error naming the file and the problem, never a crash or
 // a hang. Hand-made cases for each kind of damage, every prefix of a GLB, and assimp's corpus of
 // deliberately broken files.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -350,7 +351,7 @@ TEST(GltfBadInput, NaNNegativeAndInfiniteValues) {
     b = test::stripCharacter();
     b.doc["nodes"][1]["scale"] = {1e30, 1e30, 1e30};
     b.doc["nodes"][2]["scale"] = {1e30, 1e30, 1e30};
-    expectError(b.gltf(), "infinity");
+    expectError(b.gltf(), "the rest pose can put vertices ");
 }
 
 TEST(GltfBadInput, VertexIndicesAndJointNumbersOutOfRange) {
@@ -412,6 +413,56 @@ TEST(GltfBadInput, BrokenAnimations) {
     b = test::stripCharacter();
     b.doc["animations"][0]["samplers"][0]["output"] = b.floats({0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC4");
     expectError(b.gltf(), "rotation key 0 is not a unit quaternion");
+}
+
+namespace {
+
+// The strip with one more channel in its animation "bend": `path` of `node`, LINEAR over 0, 0.5, 1 s.
+GltfBuilder stripWithChannel(int node, const std::string& path, const std::vector<float>& values) {
+    GltfBuilder b = test::stripCharacter();
+    const int input = b.floats({0.0f, 0.5f, 1.0f}, "SCALAR");
+    const int output = b.floats(values, "VEC3");
+    nlohmann::json& animation = b.doc["animations"][0];
+    animation["samplers"].push_back({{"input", input}, {"output", output}});
+    animation["channels"].push_back(
+        {{"sampler", animation["samplers"].size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+    return b;
+}
+
+}  // namespace
+
+TEST(GltfBadInput, FiniteKeysThatAnimateBeyondTheFiniteRangeAreRefusedNamingClipAndChannel) {
+    // Each key is a finite float, so the loader's finiteness checks pass them; sampled, multiplied down
+    // the hierarchy and by the vertices, they reach inf and NaN.
+    const float big = 3e38f;
+    expectError(stripWithChannel(2, "translation", {0, 1, 0, big, big, big, 0, 1, 0}).gltf(),
+                "test.gltf: animation 0 'bend' channel 1 (translation of joint 'tip'): its keys can put vertices ");
+    const std::string huge = stripWithChannel(1, "scale", {1, 1, 1, 1e20f, 1e20f, 1e20f, 1, 1, 1}).gltf();
+    expectError(huge, "animation 0 'bend' channel 1 (scale of joint 'root'): its keys can put vertices ");
+    expectError(huge, " from the origin, beyond the 1e+18 within which skinning stays finite");
+    // Large but harmless: a joint scaled a thousandfold.
+    EXPECT_NO_THROW(test::loadText(stripWithChannel(1, "scale", {1, 1, 1, 1e3f, 1e3f, 1e3f, 1, 1, 1}).gltf()));
+}
+
+TEST(GltfBadInput, RestPoseBeyondTheFiniteRangeIsRefused) {
+    GltfBuilder b = test::stripCharacter();
+    b.doc["nodes"][0]["scale"] = {1e19, 1e19, 1e19};  // "world", above the joints: the root transform
+    expectError(b.gltf(), "test.gltf: the rest pose can put vertices ");
+}
+
+TEST(GltfBadInput, ExportPoseOfKeysNearTheFloatLimitFailsInsteadOfWritingInfinity) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("crowd-gltf-reach-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "huge.gltf") << stripWithChannel(1, "scale", {1, 1, 1, 3e38f, 3e38f, 3e38f, 1, 1, 1}).gltf();
+    const test::ProgramResult r = test::runProgram(
+        CROWD_RENDER_BINARY, "--model " + (dir / "huge.gltf").string() + " --clip bend --time 0.5 --export-pose " +
+                                 (dir / "pose.obj").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("animation 0 'bend' channel 1 (scale of joint 'root')"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "pose.obj"));
+    std::filesystem::remove_all(dir);
 }
 
 TEST(GltfBadInput, DeeplyNestedJsonIsRefusedBeforeParsing) {

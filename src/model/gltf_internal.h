@@ -156,7 +156,10 @@ void decodeBaseColorTexture(const tinygltf::Model& model, const EncodedImages& i
 std::vector<bool> animatedNodes(const tinygltf::Model& model);
 
 // Every animation as a clip of the channels that move skeleton joints.
-std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const std::vector<int>& jointOfNode,
+// A clip whose poses could leave kMaxGltfPoseReach (anim::poseReach with `maxBindDistance`, the
+// farthest bind-pose vertex) fails naming the animation and the channel that takes it there; so does
+// a rest pose that could.
+std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const SkeletonBuild& skeleton, double maxBindDistance,
                                   std::vector<std::string>& notes);
 
 }  // namespace model::gltf

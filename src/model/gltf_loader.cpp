@@ -133,7 +133,10 @@ SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& 
     model.materialColors = palette.colors;
     decodeBaseColorTexture(document, images, palette, model, notes);
 
-    model.clips = loadClips(document, build.jointOfNode, notes);
+    double maxBindDistance = 0.0;
+    for (const gpu::SkinVertex& v : model.vertices)
+        maxBindDistance = std::max(maxBindDistance, glm::length(glm::dvec3(glm::vec3(v.position))));
+    model.clips = loadClips(document, build, maxBindDistance, notes);
     if (model.clips.empty()) {
         // The crowd needs a clip to play; a file without animations stands in its rest pose.
         anim::Clip rest;

@@ -30,6 +30,11 @@ inline constexpr std::uint64_t kMaxGltfFileBytes = 1ull << 30;
 inline constexpr int kMaxGltfJsonDepth = 64;
 // Largest side of a base-colour texture that is decoded (larger ones are skipped with a note).
 inline constexpr std::uint32_t kMaxGltfTextureSide = 8192;
+// Farthest from the model's origin that any pose of any clip may put a vertex, by the bound of
+// anim::poseReach (which also bounds how far a bone matrix stretches a unit vector). Finite keys near
+// the float limit would animate into inf and NaN; 1e18 keeps squared lengths (lighting, depth) well
+// inside float range, with room for the crowd's placement. Real characters stay below 1e6.
+inline constexpr double kMaxGltfPoseReach = 1e18;
 
 // Loads the character in `path`. Throws gpu::Error with one line naming the file and the problem.
 // Problems that still leave a usable character (an undecodable texture, a second skin, point
