@@ -87,9 +87,11 @@ TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
 
 TEST(CrowdBench, BadValuesGiveOneLineErrors) {
     for (const char* arguments : {"--counts 0", "--counts 1,x", "--methods fast", "--pass-clock sundial", "--frames",
-                                  "--csv /nonexistent-dir/x.csv"}) {
+                                  "--csv /nonexistent-dir/x.csv", "--counts 1,,2", "--counts 1,2,", "--csv ''",
+                                  "--models soldier,bogus"}) {
         const test::ProgramResult r = test::runProgram(kBench, arguments);
         EXPECT_EQ(r.exitCode, 1) << arguments;
+        // One line: a bad model is found before the device starts and the progress header is printed.
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << arguments << ":\n" << r.err;
     }
 }

@@ -146,3 +146,21 @@ TEST(CrowdRenderCli, ExportPoseCutShortLeavesNoFile) {
     EXPECT_FALSE(std::filesystem::exists(obj));
     expectWriteFailure(test::runProgram(kRender, "--export-pose /dev/full"), "/dev/full");
 }
+
+TEST(CrowdRenderCli, EmptyValuesAreErrorsNotDefaults) {
+    // '' used to mean "not given": --json '' skipped the JSON, --export-pose '' started a full render.
+    for (const char* flag : {"--json", "--device", "--out", "--model", "--clip", "--asset-root", "--export-pose"})
+        expectOneLineError(std::string(flag) + " '' --count 1 --frames 1 --out " + tempFile("empty.png"),
+                           std::string(flag) + ": empty value");
+    expectOneLineError("--export-pose " + tempFile("empty.obj") + " --time ''", "--time: empty value");
+    expectOneLineError("--json= --count 1", "--json: empty value");
+    EXPECT_FALSE(std::filesystem::exists(tempFile("empty.png")));
+}
+
+TEST(CrowdRenderCli, FlagsWithoutValuesRefuseOne) {
+    expectOneLineError("--validation=no --count 1 --frames 1 --out " + tempFile("novalue.png"),
+                       "--validation takes no value");
+    expectOneLineError("--help=x", "--help takes no value");
+    expectOneLineError("--list-devices=0", "--list-devices takes no value");
+    expectOneLineError("--list-clips=yes", "--list-clips takes no value");
+}

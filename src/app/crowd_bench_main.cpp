@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -56,13 +55,16 @@ struct BenchOptions {
     bool validation = false, help = false;
 };
 
+// "a,b,c"; an empty item ("1,,2", a trailing comma) is an error, not skipped.
 std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
     std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    if (items.empty()) throw gpu::Error(flag + ": empty list");
-    return items;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = text.find(',', start);
+        items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (items.back().empty()) throw gpu::Error(flag + ": empty item in '" + text + "'");
+        if (comma == std::string::npos) return items;
+        start = comma + 1;
+    }
 }
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
@@ -72,6 +74,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         const std::string& flag = args[i];
         auto next = [&]() -> std::string {
             if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
+            if (args[i + 1].empty()) throw gpu::Error(flag + ": empty value");
             return args[++i];
         };
         if (flag == "--help" || flag == "-h") o.help = true;
@@ -143,6 +146,10 @@ app::BenchResult measure(const gpu::VulkanContext& context, const model::Skinned
 int run(const BenchOptions& options, const std::string& command) {
     if (!options.csv.empty()) io::checkWritable(options.csv);
     if (!options.json.empty()) io::checkWritable(options.json);
+    // Every model is loaded (and a bad one reported) before the device starts and progress is printed.
+    std::vector<model::SkinnedModel> models;
+    for (const std::string& modelName : options.models)
+        models.push_back(app::loadModel(modelName, options.seed, nullptr, options.assetRoot));
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     const bool fencePasses = options.passClock == "fence" ||
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
@@ -152,8 +159,7 @@ int run(const BenchOptions& options, const std::string& command) {
     std::vector<app::BenchResult> results;
     std::vector<std::string> modelNames;  // as the models name themselves (a file's model is not its path)
     const std::size_t total = options.models.size() * options.methods.size() * options.counts.size();
-    for (const std::string& modelName : options.models) {
-        const model::SkinnedModel model = app::loadModel(modelName, options.seed, nullptr, options.assetRoot);
+    for (const model::SkinnedModel& model : models) {
         modelNames.push_back(model.name);
         for (std::uint32_t count : options.counts)
             for (const std::string& methodName : options.methods) {

@@ -74,10 +74,16 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             flag = flag.substr(0, eq);
             hasInlineValue = true;
         }
+        bool valueTaken = false;
+        // An empty value is an error, never "not given": --json '' must not quietly skip the JSON.
         auto next = [&]() -> std::string {
-            if (hasInlineValue) return value;
-            if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
-            return args[++i];
+            valueTaken = true;
+            if (!hasInlineValue) {
+                if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
+                value = args[++i];
+            }
+            if (value.empty()) throw gpu::Error(flag + ": empty value");
+            return value;
         };
         if (flag == "--help" || flag == "-h") options.help = true;
         else if (flag == "--list-devices") options.listDevices = true;
@@ -99,7 +105,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         } else if (!extra || !extra(flag, next)) {
             throw gpu::Error("unknown option '" + args[i] + "' (see --help)");
         }
-        if (options.out.empty()) throw gpu::Error("--out: empty file name");
+        // --validation=no must not turn validation on.
+        if (hasInlineValue && !valueTaken) throw gpu::Error(flag + " takes no value (got '" + flag + "=" + value + "')");
     }
     return options;
 }
