@@ -164,3 +164,17 @@ TEST(CrowdRenderCli, FlagsWithoutValuesRefuseOne) {
     expectOneLineError("--list-devices=0", "--list-devices takes no value");
     expectOneLineError("--list-clips=yes", "--list-clips takes no value");
 }
+
+TEST(CrowdRenderCli, OneFrameReportsItsOwnTime) {
+    const std::string json = tempFile("one-frame.json");
+    const test::ProgramResult r =
+        test::runProgram(kRender, "--count 1 --frames 1 --size 64x64 --out /dev/null --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find("(0.0 fps)"), std::string::npos) << r.out;
+    std::ifstream file(json);
+    const nlohmann::json j = nlohmann::json::parse(file);
+    EXPECT_GT(j["fps"].get<double>(), 0.0);
+    EXPECT_GT(j["median_frame_ms"].get<double>(), 0.0);
+    EXPECT_EQ(j["frame_clock"], "one frame: CPU animate + record + GPU passes");
+    std::filesystem::remove(json);
+}

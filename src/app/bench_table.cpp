@@ -123,6 +123,7 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["median_frame_ms"] = r.frame.medianFrameMs;
         row["p95_frame_ms"] = r.frame.p95FrameMs;
         row["fps"] = r.frame.fps;
+        if (r.frame.frameClock != app::RunSummary{}.frameClock) row["frame_clock"] = r.frame.frameClock;
         row["ratio_to_static"] = ratioToStatic(results, r);
         row["gpu_ms"] = r.passes.medianGpuMs;
         row["gpu_total_ms"] = r.passes.medianGpuTotalMs;

@@ -20,6 +20,9 @@
 
 namespace {
 
+// The summary's medians are of at most this many frames, the last ones (about 2 MiB of statistics).
+constexpr std::size_t kSummarizedFrames = 10000;
+
 // crowd-render's own flags, beyond those every program shares.
 struct PoseFlags {
     bool listClips = false;
@@ -89,10 +92,16 @@ int run(const app::RenderOptions& options) {
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     render::CrowdRenderer renderer(context, crowd, rendererOptions);
-    for (std::uint32_t frame = 0; frame < options.frames; ++frame) renderer.renderFrame(app::frameTime(frame));
+    app::RecentFrames recent(kSummarizedFrames, std::min(5u, options.frames / 4));  // warm-up left out
+    for (std::uint32_t frame = 0; frame < options.frames; ++frame) {
+        renderer.renderFrame(app::frameTime(frame));
+        recent.add(renderer.takeStats());
+    }
     render::writePng(options.out, renderer.readback());
+    recent.add(renderer.takeStats());
 
-    app::RunSummary summary = app::summarize(renderer.stats(), std::min(5u, options.frames / 4));
+    app::RunSummary summary = app::summarize(recent.frames(), 0);
+    summary.frames = options.frames;
     summary.model = model.name;
     summary.method = skin::methodName(options.method);
     summary.characters = crowd.size();
