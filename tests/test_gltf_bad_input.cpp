@@ -200,6 +200,21 @@ TEST(GltfBadInput, EveryPropertyTheLoaderReadsMustHaveItsSchemaType) {
     }
 }
 
+TEST(GltfBadInput, WrongTypesWhereTheLoaderReadsNothingGiveOneNote) {
+    // tinygltf drops these too, but the character does not change: a note, not an error.
+    GltfBuilder b = test::stripCharacter();
+    b.doc["accessors"][0]["min"] = "lowest";
+    b.doc["nodes"][0]["camera"] = "main";
+    b.doc["samplers"] = {{{"wrapS", "repeat"}}};
+    b.doc["materials"][0]["normalTexture"] = {{"index", -1}};
+    std::vector<std::string> notes;
+    const model::SkinnedModel m = test::loadText(b.gltf(), &notes);
+    EXPECT_EQ(m.triangleCount(), 4u);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "test.gltf: accessors[0].min: expected an array, found a string (and 3 more); ignored: the "
+                        "loader does not use it");
+}
+
 TEST(GltfBadInput, MissingRequiredPropertiesAreNamed) {
     // tinygltf leaves out a primitive without attributes and a channel without a sampler: the mesh or
     // clip would silently lose them.
