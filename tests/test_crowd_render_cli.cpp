@@ -178,3 +178,17 @@ TEST(CrowdRenderCli, OneFrameReportsItsOwnTime) {
     EXPECT_EQ(j["frame_clock"], "one frame: CPU animate + record + GPU passes");
     std::filesystem::remove(json);
 }
+
+TEST(CrowdRenderCli, StandardOutputThatCannotBeWrittenFailsTheRun) {
+    // What a run prints is an output too: a clip list or a summary sent to a full disk is not success.
+    const std::string toFullDevice = "sh -c 'exec \"$0\" \"$@\" >/dev/full' " + kRender;
+    for (const char* arguments :
+         {"--list-clips", "--help", "--count 1 --frames 1 --size 32x32 --out /dev/null"}) {
+        const test::ProgramResult r = test::runProgram(toFullDevice, arguments);
+        EXPECT_EQ(r.exitCode, 1) << arguments;
+        // The reason is the failed write's own ("No space left on device") when the last write fails,
+        // a generic "write error" when an earlier one did.
+        EXPECT_EQ(r.err.rfind("crowd-render: cannot write standard output: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}

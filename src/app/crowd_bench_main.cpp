@@ -14,6 +14,7 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
+#include "io/standard_output.h"
 
 #ifndef CROWD_COMMIT
 #define CROWD_COMMIT "unknown"
@@ -193,6 +194,7 @@ int run(const BenchOptions& options, const std::string& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    io::failOnUnwrittenStandardOutput("crowd-bench");
     try {
         const std::vector<std::string> args(argv + 1, argv + argc);
         const BenchOptions options = parseBenchOptions(args);

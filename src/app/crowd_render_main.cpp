@@ -14,6 +14,7 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
+#include "io/standard_output.h"
 #include "model/obj_export.h"
 #include "render/crowd_renderer.h"
 #include "render/png_writer.h"
@@ -122,6 +123,7 @@ int run(const app::RenderOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    io::failOnUnwrittenStandardOutput("crowd-render");
     try {
         PoseFlags pose;
         const app::RenderOptions options = app::parseRenderOptions(
