@@ -58,6 +58,21 @@ TEST_F(OutputFile, ReplacesAnExistingFileWhole) {
     EXPECT_EQ(filesInDir(), std::vector<std::string>{"out.txt"});
 }
 
+TEST_F(OutputFile, AReplacedFileKeepsItsPermissions) {
+    std::ofstream(dir / "private.json") << "{}";
+    std::filesystem::permissions(dir / "private.json", std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+    io::writeFile(dir / "private.json", std::string_view("{\"a\": 1}"));
+    EXPECT_EQ(std::filesystem::status(dir / "private.json").permissions(),
+              std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+}
+
+TEST_F(OutputFile, TheLongestFileNameAFolderAllowsCanBeWritten) {
+    const std::string name(255, 'x');  // NAME_MAX; the temporary file beside it must still fit
+    io::checkWritable(dir / name);
+    io::writeFile(dir / name, std::string_view("ok"));
+    EXPECT_EQ(read(dir / name), "ok");
+}
+
 TEST_F(OutputFile, ReplacesTheFileASymbolicLinkNamesAndKeepsTheLink) {
     std::ofstream(dir / "target.txt") << "old";
     std::filesystem::create_symlink("target.txt", dir / "link.txt");

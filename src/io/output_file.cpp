@@ -33,20 +33,31 @@ std::filesystem::path replacedFile(const std::filesystem::path& path) {
     return error ? path : target;
 }
 
-// A name beside `file` that nothing else uses: hidden, and unique per process and call.
+// A name beside `file` that nothing else uses: hidden, and unique per process and call. The target's
+// name is cut so that a name of the longest length a folder allows still gets a temporary file.
 std::filesystem::path temporaryName(const std::filesystem::path& file) {
     static std::atomic<unsigned> counter{0};
     std::string name = ".";
-    name += file.filename().string();
+    name += file.filename().string().substr(0, 200);
     name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
     return file.parent_path() / name;
 }
 
-// Opens a new temporary file beside `file` (mode 0666 less the umask, like any new file).
+// Opens a new temporary file beside `file`: mode 0666 less the umask like any new file, or the mode of
+// the file it will replace (a private file stays private).
 int createTemporary(const std::filesystem::path& file, std::filesystem::path& temporary) {
+    struct stat existing {};
+    const bool replaces = ::stat(file.c_str(), &existing) == 0 && S_ISREG(existing.st_mode);
     for (int attempt = 0;; ++attempt) {
         temporary = temporaryName(file);
         const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0 && replaces && ::fchmod(fd, existing.st_mode & 07777) != 0) {
+            const int error = errno;
+            ::close(fd);
+            ::unlink(temporary.c_str());
+            errno = error;
+            return -1;
+        }
         if (fd >= 0 || errno != EEXIST || attempt == 100) return fd;
     }
 }
