@@ -87,9 +87,21 @@ TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
 
 TEST(CrowdBench, BadValuesGiveOneLineErrors) {
     for (const char* arguments : {"--counts 0", "--counts 1,x", "--methods fast", "--pass-clock sundial", "--frames",
-                                  "--csv /nonexistent-dir/x.csv"}) {
+                                  "--csv /nonexistent-dir/x.csv", "--counts 1,,2", "--counts 1,2,", "--csv ''",
+                                  "--models soldier,bogus"}) {
         const test::ProgramResult r = test::runProgram(kBench, arguments);
         EXPECT_EQ(r.exitCode, 1) << arguments;
+        // One line: a bad model is found before the device starts and the progress header is printed.
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << arguments << ":\n" << r.err;
+    }
+}
+
+TEST(CrowdBench, FailedWritesExitOneNamingTheFile) {
+    const std::string run = "--counts 1 --frames 1 --warmup 0 --size 32x32 --methods static --models soldier";
+    for (const std::string output : {"--csv", "--json"}) {
+        const test::ProgramResult r = test::runProgram(kBench, run + " " + output + " /dev/full");
+        EXPECT_EQ(r.exitCode, 1) << output << ":\n" << r.err;
+        const std::string lastLine = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+        EXPECT_EQ(lastLine.rfind("crowd-bench: cannot write /dev/full: ", 0), 0u) << output << ":\n" << r.err;
     }
 }

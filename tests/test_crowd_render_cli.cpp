@@ -126,3 +126,102 @@ TEST(CrowdRenderCli, MixedSceneReportsCharactersPerLodAndTheCullPass) {
     std::filesystem::remove(png);
     std::filesystem::remove(json);
 }
+
+namespace {
+
+std::string readText(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+// A run that failed to write `path` exits 1 with one line naming it.
+void expectWriteFailure(const test::ProgramResult& r, const std::string& path) {
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("crowd-render: cannot write " + path + ": ", 0), 0u) << r.err;
+}
+
+}  // namespace
+
+TEST(CrowdRenderCli, WritesToAFullDeviceFailNamingTheFile) {
+    const std::string scene = "--count 4 --frames 1 --size 96x64";
+    const test::ProgramResult png = test::runProgram(kRender, scene + " --out /dev/full");
+    expectWriteFailure(png, "/dev/full");
+    EXPECT_EQ(png.out.find("wrote"), std::string::npos) << png.out;
+    expectWriteFailure(test::runProgram(kRender, scene + " --out /dev/null --json /dev/full"), "/dev/full");
+}
+
+TEST(CrowdRenderCli, OutputCutShortByAFullDiskLeavesNoFileAndKeepsTheOldOne) {
+    // 320x240 of crowd is tens of KiB of PNG, the JSON about 900 bytes: a 512-byte limit stops both
+    // part way, as a full disk would.
+    const std::string png = tempFile("full-disk.png"), json = tempFile("full-disk.json");
+    const std::string limited = test::withFileSizeLimit(kRender, 1);
+    const std::string scene = "--count 4 --frames 1 --size 320x240";
+    expectWriteFailure(test::runProgram(limited, scene + " --out " + png), png);
+    EXPECT_FALSE(std::filesystem::exists(png));
+    expectWriteFailure(test::runProgram(limited, scene + " --out /dev/null --json " + json), json);
+    EXPECT_FALSE(std::filesystem::exists(json));
+
+    std::ofstream(png) << "the previous run's image";
+    expectWriteFailure(test::runProgram(limited, scene + " --out " + png), png);
+    EXPECT_EQ(readText(png), "the previous run's image");
+    std::filesystem::remove(png);
+    // Nothing else is left beside them either (the temporary files are removed).
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+        EXPECT_EQ(entry.path().filename().string().find("crowd-cli-" + std::to_string(::getpid()) + "-full-disk"),
+                  std::string::npos)
+            << entry.path();
+}
+
+TEST(CrowdRenderCli, ExportPoseCutShortLeavesNoFile) {
+    const std::string obj = tempFile("full-disk.obj");
+    expectWriteFailure(test::runProgram(test::withFileSizeLimit(kRender, 1), "--export-pose " + obj), obj);
+    EXPECT_FALSE(std::filesystem::exists(obj));
+    expectWriteFailure(test::runProgram(kRender, "--export-pose /dev/full"), "/dev/full");
+}
+
+TEST(CrowdRenderCli, EmptyValuesAreErrorsNotDefaults) {
+    // '' used to mean "not given": --json '' skipped the JSON, --export-pose '' started a full render.
+    for (const char* flag : {"--json", "--device", "--out", "--model", "--clip", "--asset-root", "--export-pose"})
+        expectOneLineError(std::string(flag) + " '' --count 1 --frames 1 --out " + tempFile("empty.png"),
+                           std::string(flag) + ": empty value");
+    expectOneLineError("--export-pose " + tempFile("empty.obj") + " --time ''", "--time: empty value");
+    expectOneLineError("--json= --count 1", "--json: empty value");
+    EXPECT_FALSE(std::filesystem::exists(tempFile("empty.png")));
+}
+
+TEST(CrowdRenderCli, FlagsWithoutValuesRefuseOne) {
+    expectOneLineError("--validation=no --count 1 --frames 1 --out " + tempFile("novalue.png"),
+                       "--validation takes no value");
+    expectOneLineError("--help=x", "--help takes no value");
+    expectOneLineError("--list-devices=0", "--list-devices takes no value");
+    expectOneLineError("--list-clips=yes", "--list-clips takes no value");
+}
+
+TEST(CrowdRenderCli, OneFrameReportsItsOwnTime) {
+    const std::string json = tempFile("one-frame.json");
+    const test::ProgramResult r =
+        test::runProgram(kRender, "--count 1 --frames 1 --size 64x64 --out /dev/null --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find("(0.0 fps)"), std::string::npos) << r.out;
+    std::ifstream file(json);
+    const nlohmann::json j = nlohmann::json::parse(file);
+    EXPECT_GT(j["fps"].get<double>(), 0.0);
+    EXPECT_GT(j["median_frame_ms"].get<double>(), 0.0);
+    EXPECT_EQ(j["frame_clock"], "one frame: CPU animate + record + GPU passes");
+    std::filesystem::remove(json);
+}
+
+TEST(CrowdRenderCli, StandardOutputThatCannotBeWrittenFailsTheRun) {
+    // What a run prints is an output too: a clip list or a summary sent to a full disk is not success.
+    const std::string toFullDevice = "sh -c 'exec \"$0\" \"$@\" >/dev/full' " + kRender;
+    for (const char* arguments :
+         {"--list-clips", "--help", "--count 1 --frames 1 --size 32x32 --out /dev/null"}) {
+        const test::ProgramResult r = test::runProgram(toFullDevice, arguments);
+        EXPECT_EQ(r.exitCode, 1) << arguments;
+        // The reason is the failed write's own ("No space left on device") when the last write fails,
+        // a generic "write error" when an earlier one did.
+        EXPECT_EQ(r.err.rfind("crowd-render: cannot write standard output: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}

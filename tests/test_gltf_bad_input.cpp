@@ -1,8 +1,10 @@
 // Malformed glTF files: each gives one gpu::Error naming the file and the problem, never a crash or
 // a hang. Hand-made cases for each kind of damage, every prefix of a GLB, and assimp's corpus of
 // deliberately broken files.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -101,8 +103,139 @@ TEST(GltfBadInput, WrongJsonTypesFailCleanly) {
         }
     }
     EXPECT_GT(failed, 0);
-    expectError(R"({"asset": {"version": "2.0"}, "nodes": 5})", "no skinned mesh");
+    expectError(R"({"asset": {"version": "2.0"}, "nodes": 5})", "nodes: expected an array, found 5");
     expectError(R"([1, 2, 3])", "not a valid glTF file");
+}
+
+TEST(GltfBadInput, ChildrenHoldingAnObjectIsAnErrorNotASmallerSkeleton) {
+    // tinygltf drops a "children" array it cannot read whole: the strip's root would lose its tip
+    // joint and load as a one-bone character.
+    GltfBuilder b = test::stripCharacter();
+    b.doc["nodes"][1]["children"] = {nlohmann::json::object()};
+    expectError(b.gltf(), "test.gltf: nodes[1].children[0]: expected an index (a whole number from 0 to 2147483647), "
+                          "found an object");
+    expectError(b.glb(), "nodes[1].children[0]: expected an index");
+}
+
+namespace {
+
+// "/nodes/0/children" as the loader names it: "nodes[0].children".
+std::string propertyPath(const std::string& pointer) {
+    std::string path;
+    std::size_t start = 1;
+    while (start <= pointer.size()) {
+        const std::size_t end = std::min(pointer.find('/', start), pointer.size());
+        const std::string token = pointer.substr(start, end - start);
+        const bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
+        path += index ? "[" + token + "]" : (path.empty() ? "" : ".") + token;
+        start = end + 1;
+    }
+    return path;
+}
+
+}  // namespace
+
+TEST(GltfBadInput, EveryPropertyTheLoaderReadsMustHaveItsSchemaType) {
+    using nlohmann::json;
+    // Values of every other JSON type for each kind of property. Indices must also fit tinygltf's int
+    // (4294967296 would become 0) and be whole and not negative, as sizes must.
+    const std::map<std::string, std::vector<json>> wrong = {
+        {"index", {"0", 1.5, -1, 4294967296ull, true, nullptr, json::array(), json::object()}},
+        {"size", {"0", 1.5, -1, true, nullptr, json::array(), json::object()}},
+        {"string", {5, true, nullptr, json::array(), json::object()}},
+        {"indices", {5, "0", json::object(), {1.5}, {json::object()}, {"0"}, {-1}}},
+        {"numbers", {5, "0", json::object(), {"1"}, {nullptr}, {json::object()}}},
+        {"object", {5, "x", true, nullptr, json::array()}},
+        {"objects", {5, "x", json::object(), {5}, {"x"}}},
+    };
+    const std::vector<std::pair<std::string, std::string>> properties = {
+        {"/scene", "index"},
+        {"/scenes/0/nodes", "indices"},
+        {"/nodes", "objects"},
+        {"/nodes/0/children", "indices"},
+        {"/nodes/0/translation", "numbers"},
+        {"/nodes/1/name", "string"},
+        {"/nodes/3/mesh", "index"},
+        {"/nodes/3/skin", "index"},
+        {"/skins/0/joints", "indices"},
+        {"/skins/0/inverseBindMatrices", "index"},
+        {"/meshes/0/primitives", "objects"},
+        {"/meshes/0/primitives/0/attributes", "object"},
+        {"/meshes/0/primitives/0/attributes/POSITION", "index"},
+        {"/meshes/0/primitives/0/indices", "index"},
+        {"/meshes/0/primitives/0/material", "index"},
+        {"/materials/0/pbrMetallicRoughness", "object"},
+        {"/materials/0/pbrMetallicRoughness/baseColorFactor", "numbers"},
+        {"/accessors/0/bufferView", "index"},
+        {"/accessors/0/componentType", "size"},
+        {"/accessors/0/count", "size"},
+        {"/accessors/0/type", "string"},
+        {"/bufferViews/0/buffer", "index"},
+        {"/bufferViews/0/byteOffset", "size"},
+        {"/bufferViews/0/byteLength", "size"},
+        {"/buffers/0/byteLength", "size"},
+        {"/buffers/0/uri", "string"},
+        {"/animations/0/name", "string"},
+        {"/animations/0/channels/0/sampler", "index"},
+        {"/animations/0/channels/0/target", "object"},
+        {"/animations/0/channels/0/target/node", "index"},
+        {"/animations/0/channels/0/target/path", "string"},
+        {"/animations/0/samplers/0/input", "index"},
+        {"/animations/0/samplers/0/output", "index"},
+        {"/animations/0/samplers/0/interpolation", "string"},
+    };
+    GltfBuilder strip = test::stripCharacter();
+    strip.doc["buffers"] = {{{"byteLength", strip.bin.size()},
+                             {"uri", "data:application/octet-stream;base64," + test::base64(strip.bin)}}};
+    for (const auto& [pointer, kind] : properties) {
+        ASSERT_TRUE(strip.doc.contains(json::json_pointer(pointer))) << pointer;
+        for (const json& value : wrong.at(kind)) {
+            SCOPED_TRACE(pointer + " = " + value.dump());
+            GltfBuilder b = strip;
+            b.doc[json::json_pointer(pointer)] = value;
+            // The property, or the element of it, that has the wrong type.
+            expectError(b.gltf(false), "test.gltf: " + propertyPath(pointer));
+            expectError(b.gltf(false), ": expected ");
+        }
+    }
+}
+
+TEST(GltfBadInput, WrongTypesWhereTheLoaderReadsNothingGiveOneNote) {
+    // tinygltf drops these too, but the character does not change: a note, not an error.
+    GltfBuilder b = test::stripCharacter();
+    b.doc["accessors"][0]["min"] = "lowest";
+    b.doc["nodes"][0]["camera"] = "main";
+    b.doc["samplers"] = {{{"wrapS", "repeat"}}};
+    b.doc["materials"][0]["normalTexture"] = {{"index", -1}};
+    std::vector<std::string> notes;
+    const model::SkinnedModel m = test::loadText(b.gltf(), &notes);
+    EXPECT_EQ(m.triangleCount(), 4u);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "test.gltf: accessors[0].min: expected an array, found a string (and 3 more); ignored: the "
+                        "loader does not use it");
+}
+
+TEST(GltfBadInput, MissingRequiredPropertiesAreNamed) {
+    // tinygltf leaves out a primitive without attributes and a channel without a sampler: the mesh or
+    // clip would silently lose them.
+    GltfBuilder b = test::stripCharacter();
+    test::stripPrimitive(b).erase("attributes");
+    expectError(b.gltf(), "meshes[0].primitives[0]: attributes is missing");
+    b = test::stripCharacter();
+    b.doc["animations"][0]["channels"][0].erase("sampler");
+    expectError(b.gltf(), "animations[0].channels[0]: sampler is missing");
+}
+
+TEST(GltfBadInput, ChannelWithoutATargetNodeIsIgnoredWithANote) {
+    // Legal glTF (an extension names what it animates); the loader can ignore it, and says so.
+    GltfBuilder b = test::stripCharacter();
+    b.doc["animations"][0]["channels"].push_back({{"sampler", 0}, {"target", {{"path", "rotation"}}}});
+    std::vector<std::string> notes;
+    const model::SkinnedModel m = test::loadText(b.gltf(), &notes);
+    ASSERT_EQ(m.clips.size(), 1u);
+    EXPECT_EQ(m.clips[0].channels.size(), 1u);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "test.gltf: 1 animation channel(s) without a target node ignored");
 }
 
 TEST(GltfBadInput, AccessorIndexOutOfRange) {
@@ -233,7 +366,7 @@ TEST(GltfBadInput, NaNNegativeAndInfiniteValues) {
     b = test::stripCharacter();
     b.doc["nodes"][1]["scale"] = {1e30, 1e30, 1e30};
     b.doc["nodes"][2]["scale"] = {1e30, 1e30, 1e30};
-    expectError(b.gltf(), "infinity");
+    expectError(b.gltf(), "the rest pose can put vertices ");
 }
 
 TEST(GltfBadInput, VertexIndicesAndJointNumbersOutOfRange) {
@@ -295,6 +428,56 @@ TEST(GltfBadInput, BrokenAnimations) {
     b = test::stripCharacter();
     b.doc["animations"][0]["samplers"][0]["output"] = b.floats({0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC4");
     expectError(b.gltf(), "rotation key 0 is not a unit quaternion");
+}
+
+namespace {
+
+// The strip with one more channel in its animation "bend": `path` of `node`, LINEAR over 0, 0.5, 1 s.
+GltfBuilder stripWithChannel(int node, const std::string& path, const std::vector<float>& values) {
+    GltfBuilder b = test::stripCharacter();
+    const int input = b.floats({0.0f, 0.5f, 1.0f}, "SCALAR");
+    const int output = b.floats(values, "VEC3");
+    nlohmann::json& animation = b.doc["animations"][0];
+    animation["samplers"].push_back({{"input", input}, {"output", output}});
+    animation["channels"].push_back(
+        {{"sampler", animation["samplers"].size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+    return b;
+}
+
+}  // namespace
+
+TEST(GltfBadInput, FiniteKeysThatAnimateBeyondTheFiniteRangeAreRefusedNamingClipAndChannel) {
+    // Each key is a finite float, so the loader's finiteness checks pass them; sampled, multiplied down
+    // the hierarchy and by the vertices, they reach inf and NaN.
+    const float big = 3e38f;
+    expectError(stripWithChannel(2, "translation", {0, 1, 0, big, big, big, 0, 1, 0}).gltf(),
+                "test.gltf: animation 0 'bend' channel 1 (translation of joint 'tip'): its keys can put vertices ");
+    const std::string huge = stripWithChannel(1, "scale", {1, 1, 1, 1e20f, 1e20f, 1e20f, 1, 1, 1}).gltf();
+    expectError(huge, "animation 0 'bend' channel 1 (scale of joint 'root'): its keys can put vertices ");
+    expectError(huge, " from the origin, beyond the 1e+18 within which skinning stays finite");
+    // Large but harmless: a joint scaled a thousandfold.
+    EXPECT_NO_THROW(test::loadText(stripWithChannel(1, "scale", {1, 1, 1, 1e3f, 1e3f, 1e3f, 1, 1, 1}).gltf()));
+}
+
+TEST(GltfBadInput, RestPoseBeyondTheFiniteRangeIsRefused) {
+    GltfBuilder b = test::stripCharacter();
+    b.doc["nodes"][0]["scale"] = {1e19, 1e19, 1e19};  // "world", above the joints: the root transform
+    expectError(b.gltf(), "test.gltf: the rest pose can put vertices ");
+}
+
+TEST(GltfBadInput, ExportPoseOfKeysNearTheFloatLimitFailsInsteadOfWritingInfinity) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("crowd-gltf-reach-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "huge.gltf") << stripWithChannel(1, "scale", {1, 1, 1, 3e38f, 3e38f, 3e38f, 1, 1, 1}).gltf();
+    const test::ProgramResult r = test::runProgram(
+        CROWD_RENDER_BINARY, "--model " + (dir / "huge.gltf").string() + " --clip bend --time 0.5 --export-pose " +
+                                 (dir / "pose.obj").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("animation 0 'bend' channel 1 (scale of joint 'root')"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "pose.obj"));
+    std::filesystem::remove_all(dir);
 }
 
 TEST(GltfBadInput, DeeplyNestedJsonIsRefusedBeforeParsing) {

@@ -316,6 +316,50 @@ TEST(ViewerProgram, ResizedWindowRendersAtItsNewSizeAndEscapeCloses) {
     std::filesystem::remove(script);
 }
 
+TEST(ViewerProgram, ScreenshotThatCannotBeWrittenFailsTheScript) {
+    SKIP_WITHOUT_XVFB();
+    const std::string png = tempFile("cut-short.png");
+    for (const auto& [program, path] : {std::pair{kView, std::string("/dev/full")},
+                                        std::pair{test::withFileSizeLimit(kView, 1), png}}) {
+        const test::ProgramResult r = test::runProgram(
+            xvfbRun() + program, "--count 4 --frames 1 --size 320x240 --no-ui" + deviceFlag() + " --screenshot " + path);
+        EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+        EXPECT_EQ(r.err, "crowd-view: cannot write " + path + ": " +
+                             (path == png ? "File too large" : "No space left on device") + "\n");
+        EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
+    }
+    EXPECT_FALSE(std::filesystem::exists(png));
+}
+
+TEST(ViewerProgram, WindowLargerThanTheDeviceCanPresentIsShrunkWithValidationSilent) {
+    SKIP_WITHOUT_XVFB();
+    if (!onPath("xdotool")) GTEST_SKIP() << "xdotool not found: it resizes the window (apt-get install xdotool)";
+    // 17,000 rows is beyond the largest image, framebuffer and viewport of lavapipe (16,384) and most
+    // GPUs, while its X11 surface asks for exactly the window's size: the swapchain, the renderer's
+    // target and the panel's pass must stay within the device's limits, and the window is shrunk back.
+    // The panel is on, so its pass is checked too.
+    const std::string png = tempFile("tall.png");
+    const std::string script = tempFile("tall.sh");
+    std::ofstream(script) << "set -e\n"
+                          << kView << " --count 4 --size 160x120 --validation" << deviceFlag() << " --screenshot "
+                          << png << " &\n"
+                          << "pid=$!\n"
+                          << "wid=$(xdotool search --sync --name '^crowd-view$' | head -n 1)\n"
+                          << "xdotool windowsize $wid 100 17000\nsleep 2\n"
+                          << "xdotool windowfocus $wid key F12\nsleep 2\n"
+                          << "xdotool key Escape\n"
+                          << "wait $pid\n";
+    const test::ProgramResult r = test::runProgram(xvfbRun() + "sh", script);
+    expectCleanRun(r);
+    const render::Rgba8Image viewer = readPng(png);
+    EXPECT_NE(r.out.find("a 100x17000 window is larger than"), std::string::npos) << r.out;
+    EXPECT_EQ(viewer.width, 100u) << r.out;
+    EXPECT_GE(viewer.height, 4096u) << "Vulkan guarantees 4,096-pixel images";
+    EXPECT_LT(viewer.height, 17000u);
+    std::filesystem::remove(png);
+    std::filesystem::remove(script);
+}
+
 TEST(ViewerProgram, BadFlagsAndNoDisplayFailWithOneLine) {
     // None of these needs a display: they fail before a window opens.
     struct Case {

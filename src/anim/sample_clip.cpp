@@ -48,9 +48,14 @@ glm::vec4 sampleChannel(const Channel& channel, float t) {
     switch (channel.interpolation) {
         case Interpolation::CubicSpline: {
             if (lastKey || span.blend == 0.0f) return channel.values[span.key * 3 + 1];
-            glm::vec4 value = cubicSpline(channel.values, span);
-            if (channel.path == ChannelPath::Rotation) value = glm::normalize(value);
-            return value;
+            const glm::vec4 value = cubicSpline(channel.values, span);
+            if (channel.path != ChannelPath::Rotation) return value;
+            // Between opposite keys (q and -q, one rotation) the spline can pass through zero, which
+            // has no direction: there the rotation follows the short arc between the keys instead.
+            const float length = glm::length(value);
+            if (length > 1e-6f) return value / length;
+            return slerpShortest(glm::normalize(channel.values[span.key * 3 + 1]),
+                                 glm::normalize(channel.values[(span.key + 1) * 3 + 1]), span.blend);
         }
         case Interpolation::Step:
             return channel.values[span.key];

@@ -1,12 +1,12 @@
 #include "app/bench_table.h"
 
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "gpu/buffer.h"
-#include "gpu/vulkan_error.h"
+#include "io/output_file.h"
 
 namespace app {
 namespace {
@@ -88,8 +88,7 @@ void printPassTable(const std::vector<BenchResult>& results) {
 }
 
 void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
-    std::ofstream file(path);
-    if (!file) throw gpu::Error("cannot write " + path);
+    std::ostringstream file;
     file << "model,method,characters,vertices,triangles,status,median_frame_ms,p95_frame_ms,fps,ratio_to_static,"
             "gpu_upload_ms,gpu_cull_ms,gpu_skin_ms,gpu_copy_ms,gpu_draw_ms,gpu_total_ms,pass_clock,skin_vertices_per_s,"
             "cpu_animate_ms,cpu_record_ms,memory_bytes,frames,warmup,width,height,device,driver,commit,date,"
@@ -106,7 +105,7 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
              << r.frame.culling << "\"," << r.frame.medianVisible[0] << ',' << r.frame.medianVisible[1] << ','
              << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << '\n';
     }
-    if (!file) throw gpu::Error("cannot write " + path);
+    io::writeFile(path, file.str());
 }
 
 void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
@@ -133,6 +132,7 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["median_frame_ms"] = r.frame.medianFrameMs;
         row["p95_frame_ms"] = r.frame.p95FrameMs;
         row["fps"] = r.frame.fps;
+        if (r.frame.frameClock != app::RunSummary{}.frameClock) row["frame_clock"] = r.frame.frameClock;
         row["ratio_to_static"] = ratioToStatic(results, r);
         row["gpu_ms"] = r.passes.medianGpuMs;
         row["gpu_total_ms"] = r.passes.medianGpuTotalMs;
@@ -147,10 +147,7 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         for (const skin::MemoryItem& item : r.frame.memory) row["memory_bytes"][item.what] = item.bytes;
         json["results"].push_back(row);
     }
-    std::ofstream file(path);
-    if (!file) throw gpu::Error("cannot write " + path);
-    file << json.dump(2) << '\n';
-    if (!file) throw gpu::Error("cannot write " + path);
+    io::writeFile(path, json.dump(2) + "\n");
 }
 
 }  // namespace app

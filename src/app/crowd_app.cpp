@@ -24,12 +24,13 @@ namespace app {
 
 namespace {
 
-model::SkinnedModel loadMesh(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
+model::SkinnedModel loadMesh(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes,
+                             const std::string& assetRoot) {
     if (name == "soldier") return model::makeSoldier(seed);
     if (name == "horse") return model::makeHorse(seed);
     std::error_code error;
     if (model::hasGltfExtension(name) || std::filesystem::is_regular_file(name, error))
-        return model::loadGltf(name, notes);
+        return model::loadGltf(name, notes, assetRoot);
     throw gpu::Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
 }
 
@@ -47,8 +48,9 @@ int resolveClip(const model::SkinnedModel& model, const std::string& clip) {
 
 }  // namespace
 
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes) {
-    model::SkinnedModel model = loadMesh(name, seed, notes);
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes,
+                              const std::string& assetRoot) {
+    model::SkinnedModel model = loadMesh(name, seed, notes, assetRoot);
     model::buildLods(model);
     model.poseSphere = crowd::computePoseSphere(model);
     return model;
@@ -110,10 +112,11 @@ std::string modelNames(const CrowdModels& models) {
     return names;
 }
 
-CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes) {
+CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes,
+                       const std::string& assetRoot) {
     CrowdModels result;
     for (const auto& [name, weight] : parseModelList(list)) {
-        result.models.push_back(std::make_unique<model::SkinnedModel>(loadModel(name, seed, notes)));
+        result.models.push_back(std::make_unique<model::SkinnedModel>(loadModel(name, seed, notes, assetRoot)));
         result.weights.push_back(weight);
     }
     return result;

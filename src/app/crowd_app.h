@@ -19,9 +19,11 @@ namespace app {
 
 // "soldier", "horse", or a glTF 2.0 file: a name ending in .gltf or .glb, or any existing file.
 // Throws gpu::Error for anything else and for a file that cannot be loaded. Notes on what a glTF
-// file had that the character leaves out are appended to `notes` when given. The model comes with its
-// levels of detail (model::buildLods, which reorders its vertices) and its pose sphere.
-model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr);
+// file had that the character leaves out are appended to `notes` when given. A glTF file's external
+// files must lie inside `assetRoot` (--asset-root), or its own folder when empty. The model comes with
+// its levels of detail (model::buildLods, which reorders its vertices) and its pose sphere.
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr,
+                              const std::string& assetRoot = {});
 
 // The clip `clip` names (by name, or by index), or the crowd's default clip when `clip` is empty.
 // Throws gpu::Error listing the model's clips.
@@ -44,7 +46,8 @@ struct CrowdModels {
 };
 // "soldier+horse": the models' own names, for reports.
 std::string modelNames(const CrowdModels& models);
-CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes = nullptr);
+CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes = nullptr,
+                       const std::string& assetRoot = {});
 
 // The crowd's characters for the scene options (grid layout, models by weight, clip by name or index,
 // or random). In a crowd of several models, a named clip a model lacks leaves it its default clip, and

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,7 +14,8 @@
 #include "app/scene_presets.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
-#include "render/png_writer.h"
+#include "io/output_file.h"
+#include "io/standard_output.h"
 
 #ifndef CROWD_COMMIT
 #define CROWD_COMMIT "unknown"
@@ -33,6 +33,8 @@ usage: crowd-bench [options]
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --start SECONDS      scene time of the first frame (where on the scene's camera path to measure)
   --models LIST        comma-separated models, each measured alone (default soldier,horse)
+  --asset-root DIR     let glTF files' buffers and images come from anywhere inside DIR (default:
+                       each file's own folder and below)
   --methods LIST       comma-separated methods (default vs,vs-instanced,two-pass,two-pass-direct,compute,static)
   --counts LIST        comma-separated crowd sizes (default 1,16,64,256,1024,2048,4096)
   --frames N           measured frames per configuration (default 60)
@@ -68,17 +70,20 @@ struct BenchOptions {
     std::vector<std::uint32_t> counts{1, 16, 64, 256, 1024, 2048, 4096};
     std::uint32_t frames = 60, warmup = 10, seed = 1;
     VkExtent2D size{1280, 720};
-    std::string passClock = "auto", csv, json, device;
+    std::string passClock = "auto", csv, json, device, assetRoot;
     bool validation = false, help = false;
 };
 
+// "a,b,c"; an empty item ("1,,2", a trailing comma) is an error, not skipped.
 std::vector<std::string> splitList(const std::string& flag, const std::string& text) {
     std::vector<std::string> items;
-    std::stringstream stream(text);
-    for (std::string item; std::getline(stream, item, ',');)
-        if (!item.empty()) items.push_back(item);
-    if (items.empty()) throw gpu::Error(flag + ": empty list");
-    return items;
+    for (std::size_t start = 0;;) {
+        const std::size_t comma = text.find(',', start);
+        items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (items.back().empty()) throw gpu::Error(flag + ": empty item in '" + text + "'");
+        if (comma == std::string::npos) return items;
+        start = comma + 1;
+    }
 }
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
@@ -89,6 +94,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         const std::string& flag = args[i];
         auto next = [&]() -> std::string {
             if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
+            if (args[i + 1].empty()) throw gpu::Error(flag + ": empty value");
             return args[++i];
         };
         if (flag == "--help" || flag == "-h") o.help = true;
@@ -115,6 +121,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             o.scene.cull.mode = app::parseRenderOptions({"--cull", next()}).cull.mode;
             cullGiven = true;
         } else if (flag == "--models") o.models = splitList(flag, next()), modelsGiven = true;
+        else if (flag == "--asset-root") o.assetRoot = next();
         else if (flag == "--methods") o.methods = splitList(flag, next());
         else if (flag == "--counts") {
             countsGiven = true;
@@ -181,8 +188,12 @@ app::BenchResult measure(const gpu::VulkanContext& context, const app::CrowdMode
 }
 
 int run(const BenchOptions& options, const std::string& command) {
-    if (!options.csv.empty()) render::checkWritable(options.csv);
-    if (!options.json.empty()) render::checkWritable(options.json);
+    if (!options.csv.empty()) io::checkWritable(options.csv);
+    if (!options.json.empty()) io::checkWritable(options.json);
+    // Every model is loaded (and a bad one reported) before the device starts and progress is printed.
+    std::vector<app::CrowdModels> crowds;
+    for (const std::string& modelList : options.models)
+        crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot));
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     const bool fencePasses = options.passClock == "fence" ||
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
@@ -192,8 +203,7 @@ int run(const BenchOptions& options, const std::string& command) {
     std::vector<app::BenchResult> results;
     std::vector<std::string> modelNames;  // as the models name themselves (a file's model is not its path)
     const std::size_t total = options.models.size() * options.methods.size() * options.counts.size();
-    for (const std::string& modelName : options.models) {
-        const app::CrowdModels models = app::loadModels(modelName, options.seed);
+    for (const app::CrowdModels& models : crowds) {
         modelNames.push_back(app::modelNames(models));
         for (std::uint32_t count : options.counts)
             for (const std::string& methodName : options.methods) {
@@ -230,6 +240,7 @@ int run(const BenchOptions& options, const std::string& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    io::failOnUnwrittenStandardOutput("crowd-bench");
     try {
         const std::vector<std::string> args(argv + 1, argv + argc);
         const BenchOptions options = parseBenchOptions(args);

@@ -13,11 +13,16 @@
 #include "app/report.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "io/output_file.h"
+#include "io/standard_output.h"
 #include "model/obj_export.h"
 #include "frame/crowd_renderer.h"
 #include "render/png_writer.h"
 
 namespace {
+
+// The summary's medians are of at most this many frames, the last ones (about 2 MiB of statistics).
+constexpr std::size_t kSummarizedFrames = 10000;
 
 // crowd-render's own flags, beyond those every program shares.
 struct PoseFlags {
@@ -38,7 +43,7 @@ float parseSeconds(const std::string& text) {
 model::SkinnedModel loadAndNote(const app::RenderOptions& options) {
     std::vector<std::string> notes;
     model::SkinnedModel model = app::loadModel(app::parseModelList(options.scene.model).front().first,
-                                               options.scene.seed, &notes);
+                                               options.scene.seed, &notes, options.scene.assetRoot);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     return model;
 }
@@ -60,7 +65,7 @@ int listClips(const app::RenderOptions& options) {
 
 int exportPose(const app::RenderOptions& options, const PoseFlags& flags) {
     const float time = flags.time.empty() ? 0.0f : parseSeconds(flags.time);
-    render::checkWritable(flags.exportPose);
+    io::checkWritable(flags.exportPose);
     const model::SkinnedModel character = loadAndNote(options);
     const std::uint32_t clip = app::clipIndex(character, options.scene.clip);
     const std::vector<skin::CpuSkinnedVertex> pose = app::poseOnCpu(character, clip, time);
@@ -83,11 +88,12 @@ void listDevices() {
 
 int run(const app::RenderOptions& options) {
     // Check every output before the (possibly long) run, so a bad path fails at once.
-    render::checkWritable(options.out);
-    if (!options.json.empty()) render::checkWritable(options.json);
+    io::checkWritable(options.out);
+    if (!options.json.empty()) io::checkWritable(options.json);
 
     std::vector<std::string> notes;
-    const app::CrowdModels models = app::loadModels(options.scene.model, options.scene.seed, &notes);
+    const app::CrowdModels models =
+        app::loadModels(options.scene.model, options.scene.seed, &notes, options.scene.assetRoot);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     const crowd::Crowd crowd(models.pointers(), app::buildCharacters(models, options.scene));
@@ -100,14 +106,18 @@ int run(const app::RenderOptions& options) {
     frame::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = app::crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
+    app::RecentFrames recent(kSummarizedFrames, std::min(5u, options.frames / 4));  // warm-up left out
     for (std::uint32_t frame = 0; frame < options.frames; ++frame) {
         const float time = app::frameTime(frame, options.startSeconds);
         renderer.camera = render::cameraOnPath(options.camera, shape, aspect, time);
         renderer.renderFrame(time);
+        recent.add(renderer.takeStats());
     }
     render::writePng(options.out, renderer.readback());
+    recent.add(renderer.takeStats());
 
-    app::RunSummary summary = app::summarize(renderer.stats(), std::min(5u, options.frames / 4));
+    app::RunSummary summary = app::summarize(recent.frames(), 0);
+    summary.frames = options.frames;
     summary.scene = options.scene.scene;
     summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off");
     summary.model = app::modelNames(models);
@@ -130,6 +140,7 @@ int run(const app::RenderOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    io::failOnUnwrittenStandardOutput("crowd-render");
     try {
         PoseFlags pose;
         const app::RenderOptions options = app::parseRenderOptions(

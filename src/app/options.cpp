@@ -27,6 +27,8 @@ usage: crowd-render [options]
                           culling and LOD, and a camera path (flags beside it override)
   --model LIST            soldier, horse or a skinned glTF 2.0 file (.gltf/.glb); several as
                           NAME[:WEIGHT],... e.g. soldier:3,horse:1 (default soldier)
+  --asset-root DIR        let a glTF file's buffers and images come from anywhere inside DIR (default:
+                          the file's own folder and below)
   --count N               characters, 1..16777216 (default 1024)
   --lod on|off            three levels of detail chosen by projected size (default on)
   --cull gpu|cpu|off      frustum culling and LOD choice on the GPU, on the CPU (the reference), or
@@ -140,10 +142,16 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             flag = flag.substr(0, eq);
             hasInlineValue = true;
         }
+        bool valueTaken = false;
+        // An empty value is an error, never "not given": --json '' must not quietly skip the JSON.
         auto next = [&]() -> std::string {
-            if (hasInlineValue) return value;
-            if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
-            return args[++i];
+            valueTaken = true;
+            if (!hasInlineValue) {
+                if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
+                value = args[++i];
+            }
+            if (value.empty()) throw gpu::Error(flag + ": empty value");
+            return value;
         };
         if (flag == "--help" || flag == "-h") options.help = true;
         else if (flag == "--list-devices") options.listDevices = true;
@@ -159,6 +167,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             if (!render::parseCullMode(mode, options.cull.mode))
                 throw gpu::Error("--cull: '" + mode + "' is not gpu, cpu or off");
         }
+        else if (flag == "--asset-root") options.scene.assetRoot = next();
         else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--clip") options.scene.clip = next();
         else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);
@@ -174,7 +183,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         } else if (!extra || !extra(flag, next)) {
             throw gpu::Error("unknown option '" + args[i] + "' (see --help)");
         }
-        if (options.out.empty()) throw gpu::Error("--out: empty file name");
+        // --validation=no must not turn validation on.
+        if (hasInlineValue && !valueTaken) throw gpu::Error(flag + " takes no value (got '" + flag + "=" + value + "')");
     }
     return options;
 }

@@ -22,6 +22,7 @@ struct SceneOptions {
     std::uint32_t count = 1024;
     std::string clip;               // name or index; "" = the model's default clip, "random" = one per character
     std::uint32_t seed = 1;
+    std::string assetRoot;          // folder a glTF model's external files must lie in; "" = the model's own
 };
 
 struct RenderOptions {

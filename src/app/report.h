@@ -23,8 +23,11 @@ struct RunSummary {
     double medianSkinnedVertices = 0.0;  // visible characters x their LOD's vertices
     std::uint32_t frames = 0;
     std::uint32_t measuredFrames = 0;
-    double medianFrameMs = 0.0;   // wall clock between frame starts, after warm-up
+    double medianFrameMs = 0.0;   // see frameClock
     double p95FrameMs = 0.0;
+    // How frame times were measured: the wall clock between frame starts, or, for a run of one
+    // measured frame (no interval to measure), that frame's CPU time plus its GPU passes.
+    std::string frameClock = "wall clock between frame starts";
     double fps = 0.0;             // 1000 / medianFrameMs
     double medianAnimateMs = 0.0; // CPU
     double medianRecordMs = 0.0;  // CPU
@@ -41,6 +44,24 @@ double percentile(std::vector<double> values, double fraction);
 
 // Frames before `warmup` are left out of every median.
 RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t warmup);
+
+// The statistics of at most `capacity` frames, the most recent, after leaving out the first `skip`:
+// a long run (crowd-render --frames 1000000) summarizes its last frames in bounded memory instead of
+// keeping about 220 bytes for every frame.
+class RecentFrames {
+public:
+    RecentFrames(std::size_t capacity, std::uint64_t skip) : capacity_(capacity), skip_(skip) {}
+    // Frames in order, as CrowdRenderer::takeStats() hands them over.
+    void add(std::vector<frame::FrameStats> frames);
+    // The kept frames, oldest first.
+    std::vector<frame::FrameStats> frames() const;
+
+private:
+    std::size_t capacity_;
+    std::uint64_t skip_;
+    std::vector<frame::FrameStats> ring_;
+    std::size_t next_ = 0;  // where the next frame goes once the ring is full
+};
 
 void printSummary(const RunSummary& summary);
 // Throws gpu::Error naming the path when it cannot be written.

@@ -3,8 +3,11 @@
 // channel or produces NaN.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "anim/pose_reach.h"
 #include "model/gltf_internal.h"
+#include "model/gltf_loader.h"
 
 namespace model::gltf {
 namespace {
@@ -77,6 +80,36 @@ anim::Channel readChannel(const tinygltf::Model& model, const tinygltf::Animatio
     return channel;
 }
 
+const char* pathName(anim::ChannelPath path) {
+    switch (path) {
+        case anim::ChannelPath::Translation: return "translation";
+        case anim::ChannelPath::Rotation: return "rotation";
+        case anim::ChannelPath::Scale: return "scale";
+    }
+    return "";
+}
+
+std::string distance(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+// Fails when some pose of `clip` (channels from animation `a`; `sourceChannels` their indices there)
+// could put a vertex beyond kMaxGltfPoseReach, naming the channel that takes it there.
+void checkPoseReach(const anim::Skeleton& skeleton, const anim::Clip& clip, std::size_t a,
+                    const std::vector<std::size_t>& sourceChannels, double maxBindDistance) {
+    const anim::PoseReach reach = anim::poseReach(skeleton, clip, maxBindDistance, kMaxGltfPoseReach);
+    if (reach.distance <= kMaxGltfPoseReach) return;
+    const std::string beyond = "can put vertices " + distance(reach.distance) + " from the origin, beyond the " +
+                               distance(kMaxGltfPoseReach) + " within which skinning stays finite";
+    if (reach.channel < 0) fail("the rest pose " + beyond + " (check the node transforms and inverse bind matrices)");
+    const anim::Channel& channel = clip.channels[static_cast<std::size_t>(reach.channel)];
+    fail("animation " + std::to_string(a) + " '" + clip.name + "' channel " +
+         std::to_string(sourceChannels[static_cast<std::size_t>(reach.channel)]) + " (" + pathName(channel.path) +
+         " of joint '" + skeleton.jointNames[channel.joint] + "'): its keys " + beyond);
+}
+
 }  // namespace
 
 std::vector<bool> animatedNodes(const tinygltf::Model& model) {
@@ -92,14 +125,17 @@ std::vector<bool> animatedNodes(const tinygltf::Model& model) {
     return animated;
 }
 
-std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const std::vector<int>& jointOfNode,
+std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const SkeletonBuild& skeleton, double maxBindDistance,
                                   std::vector<std::string>& notes) {
+    const std::vector<int>& jointOfNode = skeleton.jointOfNode;
+    checkPoseReach(skeleton.skeleton, anim::Clip{}, 0, {}, maxBindDistance);
     std::vector<anim::Clip> clips;
     std::size_t ignored = 0, morphWeights = 0, keyValues = 0;
     for (std::size_t a = 0; a < model.animations.size(); ++a) {
         const tinygltf::Animation& animation = model.animations[a];
         anim::Clip clip;
         clip.name = animation.name.empty() ? "clip" + std::to_string(a) : animation.name;
+        std::vector<std::size_t> sourceChannels;  // of each of the clip's channels, for messages
         for (std::size_t c = 0; c < animation.channels.size(); ++c) {
             const tinygltf::AnimationChannel& source = animation.channels[c];
             const std::string what = "animation " + std::to_string(a) + " channel " + std::to_string(c);
@@ -123,7 +159,9 @@ std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const std::vecto
             channel.joint = static_cast<std::uint32_t>(joint);
             clip.duration = std::max(clip.duration, channel.times.back());
             clip.channels.push_back(std::move(channel));
+            sourceChannels.push_back(c);
         }
+        checkPoseReach(skeleton.skeleton, clip, a, sourceChannels, maxBindDistance);
         clips.push_back(std::move(clip));
     }
     if (ignored > 0)

@@ -1,8 +1,6 @@
 // The glTF container: checks what tinygltf trusts (the GLB chunk table, JSON nesting, external
 // files) before handing the document to it.
 #include <cstring>
-#include <fstream>
-#include <system_error>
 
 #include "gpu/vulkan_error.h"
 #include "model/gltf_internal.h"
@@ -51,7 +49,15 @@ void checkJsonNesting(std::span<const std::uint8_t> json) {
 
 // The bytes to give tinygltf for a GLB file, after checking its header and chunk table against the
 // file's size (tinygltf 2.7 reads up to 8 bytes past a BIN chunk that ends at the end of the file).
-std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& patched) {
+// What tinygltf must not see unchecked in the JSON: its nesting (before any parser recurses into it),
+// then the types of the properties the loader reads.
+void checkJson(std::span<const std::uint8_t> json, std::vector<std::string>& notes) {
+    checkJsonNesting(json);
+    checkJsonTypes(json, notes);
+}
+
+std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std::vector<std::uint8_t>& patched,
+                                       std::vector<std::string>& notes) {
     if (bytes.size() < kGlbHeaderBytes + kChunkHeaderBytes)
         fail("truncated GLB: " + std::to_string(bytes.size()) + " bytes is shorter than the GLB header");
     const std::uint32_t version = readU32(bytes, 4);
@@ -65,7 +71,7 @@ std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std:
     if (readU32(bytes, 16) != kJsonChunk) fail("the first GLB chunk is not JSON");
     const std::uint64_t jsonEnd = kGlbHeaderBytes + kChunkHeaderBytes + jsonLength;
     if (jsonLength == 0 || jsonEnd > length) fail("truncated GLB: the JSON chunk runs past the end of the file");
-    checkJsonNesting(bytes.subspan(kGlbHeaderBytes + kChunkHeaderBytes, static_cast<std::size_t>(jsonLength)));
+    checkJson(bytes.subspan(kGlbHeaderBytes + kChunkHeaderBytes, static_cast<std::size_t>(jsonLength)), notes);
 
     bool keepBin = false;
     if (length - jsonEnd >= kChunkHeaderBytes) {
@@ -84,49 +90,6 @@ std::span<const std::uint8_t> checkGlb(std::span<const std::uint8_t> bytes, std:
     for (int i = 0; i < 4; ++i)
         patched[8 + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(shortLength >> (8 * i));
     return patched;
-}
-
-// File-system callbacks: regular files only (a FIFO or a device named by a URI would block or never
-// end), at most kMaxGltfFileBytes in all (a thousand buffers may name one big file), and none at all
-// when the document has no directory.
-struct FileAccess {
-    bool allowed = false;
-    std::uint64_t bytesRead = 0;
-};
-
-bool fileExists(const std::string& path, void* user) {
-    if (!static_cast<FileAccess*>(user)->allowed) return false;
-    std::error_code error;
-    return std::filesystem::is_regular_file(path, error);
-}
-
-std::string expandFilePath(const std::string& path, void*) { return path; }
-
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-    FileAccess& access = *static_cast<FileAccess*>(user);
-    std::error_code error;
-    if (!access.allowed || !std::filesystem::is_regular_file(path, error)) {
-        if (err) *err += "not a readable file: " + path;
-        return false;
-    }
-    const std::uintmax_t size = std::filesystem::file_size(path, error);
-    if (error || size > kMaxGltfFileBytes - access.bytesRead) {
-        if (err) *err += "external files larger than 1 GiB in all: " + path;
-        return false;
-    }
-    access.bytesRead += size;
-    std::ifstream file(path, std::ios::binary);
-    out->resize(static_cast<std::size_t>(size));
-    if (!file || !file.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
-        if (err) *err += "cannot read " + path;
-        return false;
-    }
-    return true;
-}
-
-bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
-    if (err) *err += "writing is not supported";
-    return false;
 }
 
 // Keeps images encoded; only the one base-colour texture used is decoded later, and only as PNG or
@@ -157,13 +120,14 @@ std::string oneLine(const std::string& text) {
 }  // namespace
 
 tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::filesystem::path& baseDir,
-                              EncodedImages& images) {
+                              const std::filesystem::path& assetRoot, EncodedImages& images,
+                              std::vector<std::string>& notes) {
     if (bytes.empty()) fail("the file is empty");
     if (bytes.size() > kMaxGltfFileBytes) fail("the file is larger than 1 GiB");
 
-    FileAccess access{!baseDir.empty()};
+    ExternalFiles files(baseDir, assetRoot);
     tinygltf::TinyGLTF parser;
-    parser.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
+    parser.SetFsCallbacks(files.callbacks());
     parser.SetImageLoader(&keepEncodedImage, &images);
 
     tinygltf::Model model;
@@ -172,11 +136,11 @@ tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::fi
     try {
         if (bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic) {
             std::vector<std::uint8_t> patched;
-            const std::span<const std::uint8_t> glb = checkGlb(bytes, patched);
+            const std::span<const std::uint8_t> glb = checkGlb(bytes, patched, notes);
             ok = parser.LoadBinaryFromMemory(&model, &error, &warning, glb.data(),
                                              static_cast<unsigned int>(glb.size()), baseDir.string());
         } else {
-            checkJsonNesting(bytes);
+            checkJson(bytes, notes);
             ok = parser.LoadASCIIFromString(&model, &error, &warning, reinterpret_cast<const char*>(bytes.data()),
                                             static_cast<unsigned int>(bytes.size()), baseDir.string());
         }
@@ -187,6 +151,9 @@ tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::fi
     } catch (const std::exception& e) {
         fail(std::string("not a valid glTF file: ") + oneLine(e.what()));
     }
+    // A refused URI fails the file even where tinygltf only warns (images): it is a file asking for
+    // something it may not have, not one that is missing.
+    if (!files.refusal().empty()) fail(oneLine(files.refusal()));
     if (!ok) fail("not a valid glTF file: " + oneLine(error));
     return model;
 }

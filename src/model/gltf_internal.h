@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -25,11 +26,45 @@ namespace model::gltf {
 // live in buffer views stay there; see decodeBaseColorTexture).
 using EncodedImages = std::map<int, std::vector<std::uint8_t>>;
 
-// Parses a .gltf (JSON) or .glb document. Checks the GLB container and the JSON nesting before
-// tinygltf sees them, reads external files only from `baseDir` (none when empty), and leaves images
-// encoded in `images`.
+// Parses a .gltf (JSON) or .glb document. Checks the GLB container, the JSON nesting and the JSON
+// types before tinygltf sees them, reads external files through ExternalFiles(baseDir, assetRoot),
+// and leaves images encoded in `images`.
 tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::filesystem::path& baseDir,
-                              EncodedImages& images);
+                              const std::filesystem::path& assetRoot, EncodedImages& images,
+                              std::vector<std::string>& notes);
+
+// Checks that every property the loader reads has the JSON type the glTF schema gives it (tinygltf
+// drops what it cannot parse, silently changing the character); fails naming the property by its
+// path, e.g. "nodes[2].children[0]: expected an index ..., found an object". Notes what the loader
+// can ignore (channels that target no node). (gltf_json_types.cpp)
+void checkJsonTypes(std::span<const std::uint8_t> json, std::vector<std::string>& notes);
+
+// ---- external files (gltf_external_files.cpp) ----
+
+// The file-system callbacks tinygltf reads every external buffer and image through. A URI must be a
+// relative path (no scheme such as file:, not absolute, no control characters) that leads, after
+// tinygltf's percent-decoding, ".." and symbolic links, to a regular file inside the asset root
+// (`assetRoot`, or `baseDir`, the document's folder, when empty); tinygltf's second try, in the
+// working directory, is never read. The first refusal is kept for the error message. With an empty
+// `baseDir` (a document from memory) nothing is read. At most kMaxGltfFileBytes in all.
+class ExternalFiles {
+public:
+    ExternalFiles(const std::filesystem::path& baseDir, const std::filesystem::path& assetRoot);
+    tinygltf::FsCallbacks callbacks();
+    // Why a URI was refused ("URI '../x.bin' leads outside the model's folder ..."), or "".
+    const std::string& refusal() const { return refusal_; }
+    // The file that tinygltf's path (its search directory joined with the decoded URI) may be read from.
+    std::optional<std::filesystem::path> resolve(const std::string& path);
+    bool read(const std::string& path, std::vector<unsigned char>& out, std::string* err);
+
+private:
+    std::string prefix_;  // the document's folder as tinygltf joins it with URIs
+    std::filesystem::path baseDir_;
+    std::filesystem::path root_;  // canonical
+    bool rootIsModelFolder_;
+    std::uint64_t bytesRead_ = 0;
+    std::string refusal_;
+};
 
 // ---- accessors (gltf_accessors.cpp) ----
 
@@ -121,7 +156,10 @@ void decodeBaseColorTexture(const tinygltf::Model& model, const EncodedImages& i
 std::vector<bool> animatedNodes(const tinygltf::Model& model);
 
 // Every animation as a clip of the channels that move skeleton joints.
-std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const std::vector<int>& jointOfNode,
+// A clip whose poses could leave kMaxGltfPoseReach (anim::poseReach with `maxBindDistance`, the
+// farthest bind-pose vertex) fails naming the animation and the channel that takes it there; so does
+// a rest pose that could.
+std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const SkeletonBuild& skeleton, double maxBindDistance,
                                   std::vector<std::string>& notes);
 
 }  // namespace model::gltf

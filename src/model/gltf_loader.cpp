@@ -96,9 +96,10 @@ void computeSkinnedBounds(SkinnedModel& model) {
 }
 
 SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& modelName,
-                        const std::filesystem::path& baseDir, std::vector<std::string>& notes) {
+                        const std::filesystem::path& baseDir, const std::filesystem::path& assetRoot,
+                        std::vector<std::string>& notes) {
     EncodedImages images;
-    const tinygltf::Model document = parseDocument(bytes, baseDir, images);
+    const tinygltf::Model document = parseDocument(bytes, baseDir, assetRoot, images, notes);
     checkRequiredExtensions(document);
     const std::vector<int> parents = nodeParents(document);
     const std::vector<int> meshNodes = skinnedMeshNodes(document, sceneNodes(document));
@@ -132,7 +133,10 @@ SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& 
     model.materialColors = palette.colors;
     decodeBaseColorTexture(document, images, palette, model, notes);
 
-    model.clips = loadClips(document, build.jointOfNode, notes);
+    double maxBindDistance = 0.0;
+    for (const gpu::SkinVertex& v : model.vertices)
+        maxBindDistance = std::max(maxBindDistance, glm::length(glm::dvec3(glm::vec3(v.position))));
+    model.clips = loadClips(document, build, maxBindDistance, notes);
     if (model.clips.empty()) {
         // The crowd needs a clip to play; a file without animations stands in its rest pose.
         anim::Clip rest;
@@ -144,11 +148,12 @@ SkinnedModel buildModel(std::span<const std::uint8_t> bytes, const std::string& 
 }
 
 SkinnedModel loadNamed(std::span<const std::uint8_t> bytes, const std::string& source, const std::string& modelName,
-                       const std::filesystem::path& baseDir, std::vector<std::string>* notes) {
+                       const std::filesystem::path& baseDir, const std::filesystem::path& assetRoot,
+                       std::vector<std::string>* notes) {
     std::vector<std::string> localNotes;
     SkinnedModel model;
     try {
-        model = buildModel(bytes, modelName, baseDir, localNotes);
+        model = buildModel(bytes, modelName, baseDir, assetRoot, localNotes);
     } catch (const gpu::Error& error) {
         throw gpu::Error(source + ": " + error.what());
     }
@@ -168,10 +173,11 @@ bool hasGltfExtension(const std::filesystem::path& path) {
 
 SkinnedModel loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::string& name,
                                 const std::filesystem::path& baseDir, std::vector<std::string>* notes) {
-    return loadNamed(bytes, name, name, baseDir, notes);
+    return loadNamed(bytes, name, name, baseDir, {}, notes);
 }
 
-SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes) {
+SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes,
+                      const std::filesystem::path& assetRoot) {
     const std::string source = path.string();
     std::error_code error;
     if (!std::filesystem::exists(path, error)) throw gpu::Error(source + ": no such file");
@@ -185,7 +191,7 @@ SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string
         throw gpu::Error(source + ": cannot read the file");
     const std::filesystem::path directory =
         path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    return loadNamed(bytes, source, path.stem().string(), directory, notes);
+    return loadNamed(bytes, source, path.stem().string(), directory, assetRoot, notes);
 }
 
 }  // namespace model

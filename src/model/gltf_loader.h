@@ -30,15 +30,27 @@ inline constexpr std::uint64_t kMaxGltfFileBytes = 1ull << 30;
 inline constexpr int kMaxGltfJsonDepth = 64;
 // Largest side of a base-colour texture that is decoded (larger ones are skipped with a note).
 inline constexpr std::uint32_t kMaxGltfTextureSide = 8192;
+// Farthest from the model's origin that any pose of any clip may put a vertex, by the bound of
+// anim::poseReach (which also bounds how far a bone matrix stretches a unit vector). Finite keys near
+// the float limit would animate into inf and NaN; 1e18 keeps squared lengths (lighting, depth) well
+// inside float range, with room for the crowd's placement. Real characters stay below 1e6.
+inline constexpr double kMaxGltfPoseReach = 1e18;
 
 // Loads the character in `path`. Throws gpu::Error with one line naming the file and the problem.
 // Problems that still leave a usable character (an undecodable texture, a second skin, point
 // primitives) are appended to `notes` when given, one line each.
-SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes = nullptr);
+//
+// External buffers and images are read only where their URIs lead, after "..", percent-decoding and
+// symbolic links, inside the asset root: `assetRoot`, or the file's own folder when empty (the
+// programs' --asset-root). A URI that leads outside it, an absolute path and a URI with a scheme
+// (file:, http:) are errors that name the URI; nothing outside is read or measured.
+SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes = nullptr,
+                      const std::filesystem::path& assetRoot = {});
 
 // The same from bytes in memory; `name` names the source in messages and becomes the model's name.
-// External files (buffers, images) resolve against `baseDir`; with an empty `baseDir` a reference to
-// an external file is an error (so fuzzing and tests never touch the file system).
+// External files (buffers, images) resolve against `baseDir`, which is also the asset root; with an
+// empty `baseDir` a reference to an external file is an error (so fuzzing and tests never touch the
+// file system).
 SkinnedModel loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::string& name,
                                 const std::filesystem::path& baseDir = {}, std::vector<std::string>* notes = nullptr);
 

@@ -11,8 +11,8 @@
 namespace model {
 
 // Writes one object: a 'v' and a 'vn' line per vertex (9 significant digits, enough to read each
-// float back exactly) and an 'f a//a b//b c//c' line per triangle. Throws gpu::Error naming the
-// file when it cannot be written.
+// float back exactly) and an 'f a//a b//b c//c' line per triangle, through io::writeFile (the whole
+// file or none). Throws gpu::Error naming the file when it cannot be written.
 void writeObj(const std::filesystem::path& path, const std::string& objectName, std::span<const glm::dvec3> positions,
               std::span<const glm::dvec3> normals, std::span<const std::uint32_t> triangles);
 

@@ -1,28 +1,27 @@
 #include "render/png_writer.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-
 #include <stb/stb_image_write.h>
 
 #include "gpu/vulkan_error.h"
+#include "io/output_file.h"
 
 namespace render {
+namespace {
 
-void checkWritable(const std::string& path) {
-    std::FILE* existing = std::fopen(path.c_str(), "rb");
-    if (existing) std::fclose(existing);
-    std::FILE* file = std::fopen(path.c_str(), "ab");
-    if (!file) throw gpu::Error("cannot write " + path + ": " + std::strerror(errno));
-    std::fclose(file);
-    if (!existing) std::remove(path.c_str());  // leave no empty file behind if the run fails later
+void append(void* context, void* data, int size) {
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    static_cast<std::vector<std::uint8_t>*>(context)->insert(static_cast<std::vector<std::uint8_t>*>(context)->end(),
+                                                             bytes, bytes + size);
 }
 
+}  // namespace
+
 void writePng(const std::string& path, const Rgba8Image& image) {
-    const int ok = stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 4,
-                                  image.pixels.data(), static_cast<int>(image.width * 4));
-    if (!ok) throw gpu::Error("cannot write PNG " + path);
+    std::vector<std::uint8_t> png;
+    const int ok = stbi_write_png_to_func(&append, &png, static_cast<int>(image.width), static_cast<int>(image.height),
+                                          4, image.pixels.data(), static_cast<int>(image.width * 4));
+    if (!ok) throw gpu::Error("cannot encode PNG " + path);
+    io::writeFile(path, png);
 }
 
 }  // namespace render

@@ -12,10 +12,8 @@ struct Rgba8Image {
     std::vector<std::uint8_t> pixels;  // width * height * 4, rows top to bottom
 };
 
-// Throws gpu::Error naming the path when it cannot be written.
+// Encodes in memory, then writes through io::writeFile (complete file or none). Throws gpu::Error
+// naming the path when it cannot be written.
 void writePng(const std::string& path, const Rgba8Image& image);
-
-// Checks up front that `path` can be created, so a long run does not fail at its very end.
-void checkWritable(const std::string& path);
 
 }  // namespace render

@@ -19,7 +19,7 @@ CrowdScene::CrowdScene(const gpu::VulkanContext& context, const app::SceneOption
 
 void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     std::vector<std::string> notes;
-    app::CrowdModels models = app::loadModels(scene.model, scene.seed, &notes);
+    app::CrowdModels models = app::loadModels(scene.model, scene.seed, &notes, scene.assetRoot);
     std::vector<crowd::Character> characters;
     try {
         characters = app::buildCharacters(models, scene);

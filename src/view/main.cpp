@@ -8,11 +8,13 @@
 
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
-#include "render/png_writer.h"
+#include "io/output_file.h"
+#include "io/standard_output.h"
 #include "view/viewer.h"
 #include "view/viewer_options.h"
 
 int main(int argc, char** argv) {
+    io::failOnUnwrittenStandardOutput("crowd-view");
     try {
         const view::ViewerOptions options = view::parseViewerOptions(std::vector<std::string>(argv + 1, argv + argc));
         if (options.render.help) return std::printf("%s%s", view::viewerUsage(), app::renderUsage()), 0;
@@ -22,7 +24,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         // A script's only output is checked before the window opens.
-        if (!options.screenshot.empty()) render::checkWritable(options.screenshot);
+        if (!options.screenshot.empty()) io::checkWritable(options.screenshot);
         view::Viewer viewer(options);
         return viewer.run();
     } catch (const gpu::Error& error) {

@@ -49,11 +49,38 @@ VkPresentModeKHR choosePresentMode(const gpu::VulkanContext& context, VkSurfaceK
     return VK_PRESENT_MODE_FIFO_KHR;
 }
 
-// 0xFFFFFFFF: the surface takes its size from the swapchain (Wayland); otherwise it is the window's.
-VkExtent2D extentFor(const VkSurfaceCapabilitiesKHR& caps, VkExtent2D size) {
-    if (caps.currentExtent.width != UINT32_MAX) return caps.currentExtent;
-    return {std::clamp(size.width, caps.minImageExtent.width, caps.maxImageExtent.width),
-            std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+// The largest image of `format` and `usage` the device can create, render into (framebuffer and
+// viewport) and the renderer can match with its own target. Surfaces may allow more: lavapipe's X11
+// surface reports any window size as its maximum, while its images stop at 16384.
+VkExtent2D deviceMaxExtent(const gpu::VulkanContext& context, VkFormat format, VkImageUsageFlags usage) {
+    const VkPhysicalDeviceLimits& limits = context.properties.limits;
+    VkImageFormatProperties image{};
+    VK_CHECK(vkGetPhysicalDeviceImageFormatProperties(context.physicalDevice, format, VK_IMAGE_TYPE_2D,
+                                                      VK_IMAGE_TILING_OPTIMAL, usage, 0, &image));
+    return {std::min({image.maxExtent.width, limits.maxImageDimension2D, limits.maxFramebufferWidth,
+                      limits.maxViewportDimensions[0]}),
+            std::min({image.maxExtent.height, limits.maxImageDimension2D, limits.maxFramebufferHeight,
+                      limits.maxViewportDimensions[1]})};
+}
+
+// The window's size (currentExtent; 0xFFFFFFFF where the surface takes its size from the swapchain, as
+// on Wayland) clamped to the surface's minimum and maximum extent and the device's maximum. Zero when
+// there can be no swapchain: the window is minimized, or the surface insists on a size beyond what the
+// device can make (X11 surfaces ask for exactly the window's size, and a window can be larger than any
+// image).
+VkExtent2D extentFor(const VkSurfaceCapabilitiesKHR& caps, VkExtent2D size, VkExtent2D deviceMax) {
+    const VkExtent2D window = caps.currentExtent.width != UINT32_MAX ? caps.currentExtent : size;
+    const VkExtent2D max{std::min(caps.maxImageExtent.width, deviceMax.width),
+                         std::min(caps.maxImageExtent.height, deviceMax.height)};
+    if (window.width == 0 || window.height == 0) return {0, 0};
+    if (caps.minImageExtent.width > max.width || caps.minImageExtent.height > max.height) return {0, 0};
+    return {std::clamp(window.width, caps.minImageExtent.width, max.width),
+            std::clamp(window.height, caps.minImageExtent.height, max.height)};
+}
+
+VkImageUsageFlags imageUsage(bool readBack) {
+    return VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+           (readBack ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : 0u);
 }
 
 VkSemaphore createSemaphore(const gpu::VulkanContext& context) {
@@ -108,8 +135,9 @@ void Swapchain::release() {
 bool Swapchain::recreate(VkExtent2D size) {
     VkSurfaceCapabilitiesKHR caps;
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice, surface_, &caps));
-    const VkExtent2D extent = extentFor(caps, size);
-    if (extent.width == 0 || extent.height == 0) return false;  // minimized since the caller looked
+    largest_ = deviceMaxExtent(context_, format_, imageUsage(canReadBack_));
+    const VkExtent2D extent = extentFor(caps, size, largest_);
+    if (extent.width == 0 || extent.height == 0) return false;  // minimized or too large since the caller looked
     VK_CHECK(vkDeviceWaitIdle(context_.device));
     destroyViews();
     VkSwapchainKHR old = swapchain_;
@@ -127,12 +155,16 @@ bool Swapchain::recreate(VkExtent2D size) {
 void Swapchain::create(VkExtent2D size, VkSwapchainKHR old) {
     VkSurfaceCapabilitiesKHR caps;
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice, surface_, &caps));
-    extent_ = extentFor(caps, size);
-    if (extent_.width == 0 || extent_.height == 0)
-        throw gpu::Error("the window has no area to draw into (minimized at start?)");
     if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
         throw gpu::Error("the window's swapchain images cannot be blitted to on " + context_.description.name);
     canReadBack_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+    windowSize_ = size;
+    largest_ = deviceMaxExtent(context_, format_, imageUsage(canReadBack_));
+    extent_ = extentFor(caps, size, largest_);
+    if (extent_.width == 0 || extent_.height == 0)
+        throw gpu::Error("cannot draw into a " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                         " window on " + context_.description.name + " (minimized, or larger than its largest image, " +
+                         std::to_string(largest_.width) + "x" + std::to_string(largest_.height) + ")");
     minImageCount_ = caps.minImageCount + 1;  // one more than the minimum: never wait for the display to let one go
     if (caps.maxImageCount > 0) minImageCount_ = std::min(minImageCount_, caps.maxImageCount);
 
@@ -143,8 +175,7 @@ void Swapchain::create(VkExtent2D size, VkSwapchainKHR old) {
     info.imageColorSpace = colorSpace_;
     info.imageExtent = extent_;
     info.imageArrayLayers = 1;
-    info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                      (canReadBack_ ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : 0u);
+    info.imageUsage = imageUsage(canReadBack_);
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = caps.currentTransform;
     info.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)

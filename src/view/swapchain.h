@@ -21,8 +21,9 @@ public:
     Swapchain& operator=(const Swapchain&) = delete;
 
     // Replaces the swapchain with one of the surface's current size (or `size` where the surface
-    // leaves it to us); waits for the device first. Returns false, changing nothing, while the
-    // surface has no area (minimized): a swapchain cannot have a zero extent.
+    // leaves it to us), within largestExtent(); waits for the device first. Returns false, changing
+    // nothing, while the surface has no area (minimized: a swapchain cannot have a zero extent) or asks
+    // for images larger than largestExtent() (the window must shrink first).
     bool recreate(VkExtent2D size);
 
     struct Frame {
@@ -37,7 +38,15 @@ public:
     bool present(const Frame& frame);
 
     VkFormat format() const { return format_; }
+    // The images' size: the window's, within the surface's extent limits and largestExtent().
     VkExtent2D extent() const { return extent_; }
+    // The largest images the device can present (its image, framebuffer and viewport limits, which
+    // surfaces may not reflect: lavapipe's X11 surface accepts any window). The window must not grow
+    // beyond it.
+    VkExtent2D largestExtent() const { return largest_; }
+    // The window size the swapchain was made for; it needs remaking when the window's differs (its
+    // extent may, when the window is larger than the surface allows).
+    VkExtent2D windowSize() const { return windowSize_; }
     VkPresentModeKHR presentMode() const { return presentMode_; }
     std::uint32_t minImageCount() const { return minImageCount_; }
     const std::vector<VkImageView>& views() const { return views_; }
@@ -56,6 +65,8 @@ private:
     VkColorSpaceKHR colorSpace_ = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
     VkExtent2D extent_{0, 0};
+    VkExtent2D windowSize_{0, 0};
+    VkExtent2D largest_{0, 0};
     std::uint32_t minImageCount_ = 0;
     bool canReadBack_ = false;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;

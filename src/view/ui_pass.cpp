@@ -1,5 +1,6 @@
 #include "view/ui_pass.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <imgui.h>
@@ -152,7 +153,14 @@ void UiPass::record(VkCommandBuffer cmd, std::uint32_t imageIndex, VkExtent2D ex
     begin.framebuffer = framebuffers_.at(imageIndex);
     begin.renderArea = {{0, 0}, extent};
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+    // ImGui sizes its viewport by the window, which may be larger than the swapchain's images (they
+    // stop at the surface's largest extent): the panel is drawn over the part the images cover.
+    ImDrawData* drawData = ImGui::GetDrawData();
+    const ImVec2 scale = drawData->FramebufferScale;
+    if (scale.x > 0.0f && scale.y > 0.0f)
+        drawData->DisplaySize = ImVec2(std::min(drawData->DisplaySize.x, static_cast<float>(extent.width) / scale.x),
+                                       std::min(drawData->DisplaySize.y, static_cast<float>(extent.height) / scale.y));
+    ImGui_ImplVulkan_RenderDrawData(drawData, cmd);
     vkCmdEndRenderPass(cmd);
 }
 

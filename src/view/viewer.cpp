@@ -50,6 +50,7 @@ Viewer::Viewer(const ViewerOptions& options)
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
       scene_(context_, options.render.scene, options.render.method, options.render.cull, swapchain_.extent()) {
+    window_.limitFramebufferSize(swapchain_.largestExtent());
     controls_.scenePath = options.render.camera != render::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
     frameHome(true);
@@ -70,7 +71,7 @@ int Viewer::run() {
         window_.pollEvents();
         if (!window_.waitWhileMinimized()) break;
         const VkExtent2D size = window_.framebufferSize();
-        if (swapchainStale_ || size != swapchain_.extent()) {
+        if (swapchainStale_ || size != swapchain_.windowSize()) {
             recreateSwapchain(size);
             if (swapchainStale_) continue;
         }
@@ -154,7 +155,17 @@ bool Viewer::drawFrame(float time, bool screenshot) {
 
 void Viewer::recreateSwapchain(VkExtent2D size) {
     swapchainStale_ = !swapchain_.recreate(size);
-    if (swapchainStale_) return;
+    if (swapchainStale_) {
+        // Resized beyond what the device can present (no window manager enforced the limit): shrink back.
+        const VkExtent2D largest = swapchain_.largestExtent();
+        if (size.width > largest.width || size.height > largest.height) {
+            note("a " + std::to_string(size.width) + "x" + std::to_string(size.height) + " window is larger than " +
+                 context_.description.name + " can present (" + std::to_string(largest.width) + "x" +
+                 std::to_string(largest.height) + "); shrinking it");
+            window_.limitFramebufferSize(largest);
+        }
+        return;
+    }
     if (ui_) ui_->onSwapchainRecreated(swapchain_);
     scene_.renderer().resize(swapchain_.extent());
     frameHome(false);  // R frames the crowd for the new shape; the camera stays where it is

@@ -78,6 +78,21 @@ bool Window::waitWhileMinimized() {
     return !shouldClose();
 }
 
+void Window::limitFramebufferSize(VkExtent2D largest) {
+    // GLFW sizes windows in screen units; the framebuffer may have more pixels per unit (high DPI).
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    const VkExtent2D pixels = framebufferSize();
+    if (width <= 0 || height <= 0 || pixels.width == 0 || pixels.height == 0) return;  // minimized: sizes unknown
+    const auto units = [](std::uint32_t limit, std::uint32_t pixels, int units) {
+        return std::max(1, static_cast<int>(static_cast<std::uint64_t>(limit) * static_cast<std::uint64_t>(units) / pixels));
+    };
+    const int maxWidth = units(largest.width, pixels.width, width);
+    const int maxHeight = units(largest.height, pixels.height, height);
+    glfwSetWindowSizeLimits(window_, GLFW_DONT_CARE, GLFW_DONT_CARE, maxWidth, maxHeight);
+    if (width > maxWidth || height > maxHeight) glfwSetWindowSize(window_, std::min(width, maxWidth), std::min(height, maxHeight));
+}
+
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
 
 void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }

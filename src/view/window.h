@@ -34,6 +34,10 @@ public:
     // Blocks, without spinning, while minimized: a swapchain cannot have a zero extent, and drawing
     // unseen frames only heats the GPU. Returns false when the window was closed meanwhile.
     bool waitWhileMinimized();
+    // Keeps the framebuffer within `largest` pixels: size limits for the window manager, and a resize
+    // now if the window is already larger (other clients, or a missing window manager, can still make it
+    // larger; call again then).
+    void limitFramebufferSize(VkExtent2D largest);
     bool shouldClose() const;
     void requestClose();
 

@@ -15,4 +15,8 @@ struct ProgramResult {
 ProgramResult runProgram(const std::string& program, const std::string& arguments,
                          const std::string& environment = "", int timeoutSeconds = 120);
 
+// `program` as a command whose files may grow to at most `blocks` x 512 bytes (RLIMIT_FSIZE, with
+// SIGXFSZ ignored): a write past the limit fails as it would on a full disk. Pass it to runProgram.
+std::string withFileSizeLimit(const std::string& program, int blocks);
+
 }  // namespace test

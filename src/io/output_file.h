@@ -1,0 +1,25 @@
+#pragma once
+// Every file the programs write (images, JSON, CSV, OBJ, screenshots) goes through here, so that a
+// write that fails says so, and a run that fails leaves nothing under the requested name that could
+// pass for a complete result.
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace io {
+
+// Writes `bytes` as the whole content of `path`. A regular file (or a new one) is written under a
+// temporary name in the same folder, flushed to disk, closed and only then renamed over `path`, every
+// step checked: on failure the temporary file is removed and an existing file at `path` is left as it
+// was. A path that exists and is not a regular file (/dev/null, /dev/stdout, a FIFO) is written in
+// place, every write and the close checked. Throws gpu::Error "cannot write <path>: <reason>".
+void writeFile(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
+void writeFile(const std::filesystem::path& path, std::string_view text);
+
+// Checks, before a long run, that writeFile(path) can create its temporary file (the folder exists and
+// is writable) or open `path` in place. Creates and removes nothing else. Throws like writeFile.
+void checkWritable(const std::filesystem::path& path);
+
+}  // namespace io
