@@ -272,3 +272,35 @@ TEST_F(GpuTest, MixedCrowdRendersEachModelAsItsOwnCrowdDoes) {
     }
     EXPECT_GE(fraction, 0.995) << "images left in " << test::artifactPath("");
 }
+
+TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) {
+    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    render::Camera camera;
+    camera.eye = {0.0f, 1.0f, 20.0f};
+    camera.target = {0.0f, 1.0f, 0.0f};
+    const float aspect = 1.5f;
+    const glm::vec4 left = crowd::frustumPlanes(camera.viewProjection(aspect))[0];
+    const glm::vec3 sphereCentre(soldier.poseSphere);
+    const float radius = soldier.poseSphere.w;
+    // A character placed by where its pose sphere's centre lands (heading 0, scale 1): at z = 0, the x
+    // where the left plane's distance is d.
+    auto placeAt = [&](float d) {
+        crowd::Character c;
+        const float z = 0.0f, y = sphereCentre.y;
+        const float x = (d - left.w - left.y * y - left.z * z) / left.x;
+        c.position = glm::vec3(x, 0.0f, z) - glm::vec3(sphereCentre.x, 0.0f, sphereCentre.z);
+        return c;
+    };
+    const crowd::Crowd crowd(soldier, {placeAt(0.0f), placeAt(-1.01f * radius), placeAt(-0.99f * radius)});
+    frame::RendererOptions options;
+    options.size = {96, 64};
+    options.method = skin::Method::Compute;
+    frame::CrowdRenderer renderer(*context, crowd, options);
+    renderer.camera = camera;
+    renderer.renderFrame(0.0f);
+    renderer.finish();
+    const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(*context, renderer);
+    EXPECT_EQ(drawn.count(0), 1u) << "centred on the plane: half of it is in view";
+    EXPECT_EQ(drawn.count(1), 0u) << "its sphere wholly outside, by 1 % of the radius";
+    EXPECT_EQ(drawn.count(2), 1u) << "its sphere just touching the view";
+}
