@@ -218,59 +218,10 @@ TEST_F(GpuTest, CulledCrowdRendersTheSameImageAsTheUnculledOne) {
 TEST_F(GpuTest, MixedCrowdRendersEachModelAsItsOwnCrowdDoes) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
     const model::SkinnedModel horse = app::loadModel("horse", 1);
-    // A row of alternating soldiers and horses, far enough apart that none overlaps another on screen.
-    std::vector<crowd::Character> mixed;
-    for (std::uint32_t i = 0; i < 6; ++i) {
-        crowd::Character c;
-        c.model = i % 2;
-        c.clip = 0;
-        c.timeOffset = 0.1f * static_cast<float>(i);
-        c.position = glm::vec3(3.2f * (static_cast<float>(i) - 2.5f), 0.0f, 0.0f);
-        c.heading = 0.5f;
-        c.tint = glm::vec3(0.85f + 0.05f * static_cast<float>(i));
-        mixed.push_back(c);
-    }
-    auto only = [&](std::uint32_t model) {
-        std::vector<crowd::Character> subset;
-        for (crowd::Character c : mixed)
-            if (c.model == model) c.model = 0, subset.push_back(c);
-        return subset;
-    };
-    render::Camera camera;
-    camera.eye = {0.0f, 4.0f, 12.0f};
-    camera.target = {0.0f, 0.8f, 0.0f};
-    const render::CullSettings cull;
-    const crowd::Crowd both({&soldier, &horse}, mixed);
-    const crowd::Crowd soldiers(soldier, only(0));
-    const crowd::Crowd horses(horse, only(1));
-    crowd::Character away;  // one soldier behind the camera: culled, so the picture is the empty scene
-    away.position = {0.0f, 0.0f, 100.0f};
-    const crowd::Crowd empty(soldier, {away});
-    const render::Rgba8Image a = renderAt(*context, both, cull, camera);
-    const render::Rgba8Image s = renderAt(*context, soldiers, cull, camera);
-    const render::Rgba8Image h = renderAt(*context, horses, cull, camera);
-    const render::Rgba8Image e = renderAt(*context, empty, cull, camera);
-    std::size_t soldierPixels = 0, horsePixels = 0, matching = 0;
-    auto pixel = [](const render::Rgba8Image& image, std::size_t p) {
-        return glm::ivec4(image.pixels[p], image.pixels[p + 1], image.pixels[p + 2], image.pixels[p + 3]);
-    };
-    auto near = [](glm::ivec4 x, glm::ivec4 y) { return glm::all(glm::lessThanEqual(glm::abs(x - y), glm::ivec4(2))); };
-    for (std::size_t p = 0; p < a.pixels.size(); p += 4) {
-        const bool isSoldier = !near(pixel(s, p), pixel(e, p));
-        const bool isHorse = !near(pixel(h, p), pixel(e, p));
-        soldierPixels += isSoldier, horsePixels += isHorse;
-        const glm::ivec4 expected = isSoldier ? pixel(s, p) : isHorse ? pixel(h, p) : pixel(e, p);
-        matching += near(pixel(a, p), expected);
-    }
-    EXPECT_GT(soldierPixels, 100u);
-    EXPECT_GT(horsePixels, 100u);
-    const double fraction = static_cast<double>(matching) / static_cast<double>(a.pixels.size() / 4);
-    if (fraction < 0.995) {
-        render::writePng(test::artifactPath("mixed.png"), a);
-        render::writePng(test::artifactPath("mixed-soldiers.png"), s);
-        render::writePng(test::artifactPath("mixed-horses.png"), h);
-    }
-    EXPECT_GE(fraction, 0.995) << "images left in " << test::artifactPath("");
+    const test::MixedCrowdMatch match = test::compareMixedCrowd(*context, soldier, horse, 1.0f, "soldier-horse");
+    EXPECT_GT(match.firstModelPixels, 100u);
+    EXPECT_GT(match.secondModelPixels, 100u);
+    EXPECT_GE(match.matchingFraction, 0.995) << "images left in " << test::artifactPath("");
 }
 
 TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) {

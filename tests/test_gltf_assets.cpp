@@ -373,3 +373,18 @@ TEST(GltfAssets, CrowdRenderDrawsACrowdOfEachAssetWithValidationSilent) {
     }
     if (present == 0) GTEST_SKIP() << "no shared assets in " << CROWD_SHARED_ASSETS_DIR;
 }
+
+TEST_F(GpuTest, TwoTexturedGltfModelsInOneCrowdRenderAsTheirOwnCrowdsDo) {
+    SKIP_WITHOUT(kFox);
+    SKIP_WITHOUT(kCesiumMan);
+    // Both textured: in the mixed crowd the Fox's texture is in slot 2, alone in slot 1, so a crowd
+    // that mixed up slots or material bases would not match.
+    const model::SkinnedModel man = app::loadModel(assetPath(kCesiumMan).string(), 1);
+    const model::SkinnedModel fox = app::loadModel(assetPath(kFox).string(), 1);
+    ASSERT_FALSE(man.baseColorTexture.rgba.empty());
+    ASSERT_FALSE(fox.baseColorTexture.rgba.empty());
+    const test::MixedCrowdMatch match = test::compareMixedCrowd(*context, man, fox, 1.0f, "cesiumman-fox");
+    EXPECT_GT(match.firstModelPixels, 100u);
+    EXPECT_GT(match.secondModelPixels, 30u);
+    EXPECT_GE(match.matchingFraction, 0.995) << "images left in " << test::artifactPath("");
+}

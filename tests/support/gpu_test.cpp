@@ -6,6 +6,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/one_shot_commands.h"
+#include "render/camera.h"
 
 namespace test {
 
@@ -78,6 +79,74 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::
     const std::map<std::uint32_t, DrawnCharacter> drawn = readDrawList(context, renderer);
     const DrawnCharacter& d = drawn.at(character);
     return readSkinnedVertices(context, renderer.method().skinnedVertices(), d.firstVertex, d.vertexCount);
+}
+
+namespace {
+
+render::Rgba8Image renderCrowd(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const render::Camera& camera) {
+    frame::RendererOptions options;
+    options.size = {192, 108};
+    options.method = skin::Method::Compute;
+    frame::CrowdRenderer renderer(context, crowd, options);
+    renderer.camera = camera;
+    renderer.renderFrame(1.25f);
+    return renderer.readback();
+}
+
+glm::ivec4 pixelAt(const render::Rgba8Image& image, std::size_t p) {
+    return glm::ivec4(image.pixels[p], image.pixels[p + 1], image.pixels[p + 2], image.pixels[p + 3]);
+}
+
+bool samePixel(glm::ivec4 x, glm::ivec4 y) { return glm::all(glm::lessThanEqual(glm::abs(x - y), glm::ivec4(2))); }
+
+}  // namespace
+
+MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model::SkinnedModel& a,
+                                  const model::SkinnedModel& b, float scaleB, const std::string& name) {
+    // A row of alternating characters, far enough apart that none overlaps another on screen.
+    std::vector<crowd::Character> mixed;
+    for (std::uint32_t i = 0; i < 6; ++i) {
+        crowd::Character c;
+        c.model = i % 2;
+        c.clip = 0;
+        c.timeOffset = 0.1f * static_cast<float>(i);
+        c.position = glm::vec3(3.2f * (static_cast<float>(i) - 2.5f), 0.0f, 0.0f);
+        c.heading = 0.5f;
+        c.scale = c.model == 1 ? scaleB : 1.0f;
+        c.tint = glm::vec3(0.85f + 0.05f * static_cast<float>(i));
+        mixed.push_back(c);
+    }
+    auto only = [&](std::uint32_t model) {
+        std::vector<crowd::Character> subset;
+        for (crowd::Character c : mixed)
+            if (c.model == model) c.model = 0, subset.push_back(c);
+        return subset;
+    };
+    render::Camera camera;
+    camera.eye = {0.0f, 4.0f, 12.0f};
+    camera.target = {0.0f, 0.8f, 0.0f};
+    crowd::Character away;  // one character behind the camera: culled, so the picture is the empty scene
+    away.position = {0.0f, 0.0f, 100.0f};
+    const render::Rgba8Image both = renderCrowd(context, crowd::Crowd({&a, &b}, mixed), camera);
+    const render::Rgba8Image first = renderCrowd(context, crowd::Crowd(a, only(0)), camera);
+    const render::Rgba8Image second = renderCrowd(context, crowd::Crowd(b, only(1)), camera);
+    const render::Rgba8Image empty = renderCrowd(context, crowd::Crowd(a, {away}), camera);
+    MixedCrowdMatch match;
+    std::size_t matching = 0;
+    for (std::size_t p = 0; p < both.pixels.size(); p += 4) {
+        const bool inFirst = !samePixel(pixelAt(first, p), pixelAt(empty, p));
+        const bool inSecond = !samePixel(pixelAt(second, p), pixelAt(empty, p));
+        match.firstModelPixels += inFirst, match.secondModelPixels += inSecond;
+        const glm::ivec4 expected = inFirst ? pixelAt(first, p) : inSecond ? pixelAt(second, p) : pixelAt(empty, p);
+        matching += samePixel(pixelAt(both, p), expected);
+    }
+    match.matchingFraction = static_cast<double>(matching) / static_cast<double>(both.pixels.size() / 4);
+    if (match.matchingFraction < 0.995) {
+        render::writePng(artifactPath(name + "-mixed.png"), both);
+        render::writePng(artifactPath(name + "-first.png"), first);
+        render::writePng(artifactPath(name + "-second.png"), second);
+    }
+    return match;
 }
 
 double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance) {

@@ -50,6 +50,18 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::
 // Fraction of pixels whose every channel differs by at most `tolerance` (out of 255).
 double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance);
 
+// A crowd of two models side by side against the same characters drawn as two one-model crowds and as
+// an empty scene: pixels that only the first (second) crowd covers, and the fraction of the mixed
+// image's pixels that equal the one-model crowds' (within 2/255). The second model's characters are
+// scaled by `scaleB`. Leaves the images in artifactPath(name + "-*.png") when they do not match.
+struct MixedCrowdMatch {
+    std::size_t firstModelPixels = 0;
+    std::size_t secondModelPixels = 0;
+    double matchingFraction = 0.0;
+};
+MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model::SkinnedModel& a,
+                                  const model::SkinnedModel& b, float scaleB, const std::string& name);
+
 // Where failing image tests leave their images for a person to look at.
 std::string artifactPath(const std::string& name);
 
