@@ -1,5 +1,6 @@
 #include "support/gpu_test.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -132,15 +133,18 @@ MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model
     const render::Rgba8Image second = renderCrowd(context, crowd::Crowd(b, only(1)), camera);
     const render::Rgba8Image empty = renderCrowd(context, crowd::Crowd(a, {away}), camera);
     MixedCrowdMatch match;
-    std::size_t matching = 0;
+    std::size_t matching = 0, firstMatching = 0, secondMatching = 0;
     for (std::size_t p = 0; p < both.pixels.size(); p += 4) {
         const bool inFirst = !samePixel(pixelAt(first, p), pixelAt(empty, p));
         const bool inSecond = !samePixel(pixelAt(second, p), pixelAt(empty, p));
         match.firstModelPixels += inFirst, match.secondModelPixels += inSecond;
         const glm::ivec4 expected = inFirst ? pixelAt(first, p) : inSecond ? pixelAt(second, p) : pixelAt(empty, p);
-        matching += samePixel(pixelAt(both, p), expected);
+        const bool same = samePixel(pixelAt(both, p), expected);
+        matching += same, firstMatching += same && inFirst, secondMatching += same && inSecond;
     }
     match.matchingFraction = static_cast<double>(matching) / static_cast<double>(both.pixels.size() / 4);
+    match.firstModelMatching = static_cast<double>(firstMatching) / static_cast<double>(std::max<std::size_t>(match.firstModelPixels, 1));
+    match.secondModelMatching = static_cast<double>(secondMatching) / static_cast<double>(std::max<std::size_t>(match.secondModelPixels, 1));
     if (match.matchingFraction < 0.995) {
         render::writePng(artifactPath(name + "-mixed.png"), both);
         render::writePng(artifactPath(name + "-first.png"), first);

@@ -57,7 +57,9 @@ double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8
 struct MixedCrowdMatch {
     std::size_t firstModelPixels = 0;
     std::size_t secondModelPixels = 0;
-    double matchingFraction = 0.0;
+    double matchingFraction = 0.0;        // of all pixels
+    double firstModelMatching = 0.0;      // of the first model's pixels
+    double secondModelMatching = 0.0;     // of the second model's pixels
 };
 MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model::SkinnedModel& a,
                                   const model::SkinnedModel& b, float scaleB, const std::string& name);
