@@ -87,8 +87,12 @@ crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const fr
     for (std::uint32_t b = 0; b < lists.bucketCount(); ++b) {
         gpu::BucketFrame frame;
         std::memcpy(&frame, frames.data() + b * sizeof frame, sizeof frame);
-        result[b].resize(frame.count);
-        std::memcpy(result[b].data(), visible.data() + lists.buckets()[b].list.z * 4, frame.count * 4);
+        const std::byte* first = visible.data() + lists.buckets()[b].list.z * 4;
+        for (std::uint32_t k = 0; k < frame.count; ++k) {
+            std::uint32_t c;
+            std::memcpy(&c, first + k * 4, 4);
+            result[b].push_back(c);
+        }
         std::sort(result[b].begin(), result[b].end());
     }
     return result;
