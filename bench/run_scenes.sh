@@ -4,7 +4,7 @@
 # Expects the Vulkan loader packages in .gl/ and prebuilt binaries plus their shared libraries in
 # .devbin/ (both carried with the call). Everything lands in $OUT/scenes.tgz (the device tool brings
 # back few files), with a summary on stdout. Two parts, each well inside one call's 10 minutes:
-# Usage: bench/run_scenes.sh scenes|stress [quick]
+# Usage: bench/run_scenes.sh scenes|stress|shadows [quick]
 set -uo pipefail
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
@@ -30,7 +30,15 @@ bench() {  # name, crowd-bench flags...
   grep -A40 "^Per pass" "$res/$name.txt" | cut -c1-200
 }
 hd="--size 1920x1080"
-if [[ $part == scenes ]]; then
+if [[ $part == shadows ]]; then
+  # Skin once, draw twice: Table 1 and Fig. 4 with the shadow map on and off, every method.
+  bench table1-shadows --counts 1,16,64,256,1024,2048,4096,16384 --shadows on
+  bench table1-no-shadows --counts 1,16,64,256,1024,2048,4096,16384 --shadows off
+  bench fig4-shadows --scene paper-fig4 $hd --shadows on
+  bench fig4-no-shadows --scene paper-fig4 $hd --shadows off
+  "$bin/crowd-render" --device NVIDIA --scene paper-fig4 --method compute --size 1920x1080 --frames 600 \
+    --out "$res/paper-fig4-shadows.png" --json "$res/paper-fig4-shadows.json" >"$res/paper-fig4-shadows.txt" 2>&1
+elif [[ $part == scenes ]]; then
   bench fig3 --scene paper-fig3 $hd
   bench fig4 --scene paper-fig4 $hd
   bench fig5 --scene paper-fig5 $hd

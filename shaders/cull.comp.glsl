@@ -19,7 +19,9 @@ layout(std430, set = 0, binding = 6) buffer LodState { uint lodState[]; };
 void cullCharacter(uint c) {
     CharacterRecord character = characters[c];
     vec4 sphere = worldSphere(character, models[character.ids.x]);
-    bool inView = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
+    bool inView = cull.flags.y == 0u ||
+                  (cull.limits.y != 0u ? casterInFrustum(cull.planes, sphere, cull.light.xyz)
+                                       : sphereInFrustum(cull.planes, sphere));
     // Every character's level is kept up to date, visible or not, so culling never changes a level.
     uint lod = 0u;
     if (cull.flags.z != 0u) lod = chooseLod(projectedDiameter(sphere, cull.camera), lodState[c], cull.lod);

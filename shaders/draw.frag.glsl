@@ -28,5 +28,5 @@ vec3 sampleBaseColor(uint slot, vec2 uv) {
 
 void main() {
     vec3 albedo = vAlbedo * sampleBaseColor(vTextureSlot, vUv);
-    outColor = vec4(shade(scene, vNormal, albedo, distance(vWorld, cameraPosition.xyz)), 1.0);
+    outColor = vec4(shade(scene, vNormal, albedo, vWorld, cameraPosition.xyz), 1.0);
 }

@@ -114,7 +114,9 @@ struct CullUniforms {
                      // z: hysteresis (fraction of a threshold), w: unused
     uvec4 flags;     // x: characters, y: 1 = frustum culling, z: 1 = LOD selection (else all LOD 0),
                      // w: buckets
-    uvec4 limits;    // x: most workgroups in a dispatch's x dimension, y-w: unused
+    uvec4 limits;    // x: most workgroups in a dispatch's x dimension, y: 1 = keep shadow casters,
+                     // z, w: unused
+    vec4 light;      // xyz: unit vector towards the light (shadow casters), w: unused
 };
 
 // Push constants of the skinning passes: which bucket, and where its characters come from.
@@ -134,6 +136,8 @@ struct SceneUniforms {
     uvec4 materialFlags;  // bit m of (x, y, z, w)[m / 32] set when material m is multiplied by its
                           // model's base-colour texture
     vec4 palette[MAX_MATERIALS];
+    mat4 lightViewProjection;  // world to the shadow map's clip space
+    vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: unused
 };
 
 #ifdef __cplusplus

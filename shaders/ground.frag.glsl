@@ -13,5 +13,5 @@ void main() {
     vec2 tile = floor(inWorld.xz / scene.groundColor.w);
     float checker = mod(tile.x + tile.y, 2.0) == 0.0 ? 1.0 : 0.86;
     vec3 albedo = scene.groundColor.rgb * checker;
-    outColor = vec4(shade(scene, vec3(0.0, 1.0, 0.0), albedo, distance(inWorld, cameraPosition.xyz)), 1.0);
+    outColor = vec4(shade(scene, vec3(0.0, 1.0, 0.0), albedo, inWorld, cameraPosition.xyz), 1.0);
 }

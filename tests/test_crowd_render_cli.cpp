@@ -152,10 +152,10 @@ TEST(CrowdRenderCli, WritesToAFullDeviceFailNamingTheFile) {
 }
 
 TEST(CrowdRenderCli, OutputCutShortByAFullDiskLeavesNoFileAndKeepsTheOldOne) {
-    // 320x240 of crowd is tens of KiB of PNG, the JSON about 900 bytes: a 512-byte limit stops both
-    // part way, as a full disk would.
+    // 320x240 of crowd is tens of KiB of PNG, the JSON about 1.2 KiB: a 1 KiB limit stops both part
+    // way, as a full disk would, and leaves room for the summary on standard output (about 530 bytes).
     const std::string png = tempFile("full-disk.png"), json = tempFile("full-disk.json");
-    const std::string limited = test::withFileSizeLimit(kRender, 1);
+    const std::string limited = test::withFileSizeLimit(kRender, 2);
     const std::string scene = "--count 4 --frames 1 --size 320x240";
     expectWriteFailure(test::runProgram(limited, scene + " --out " + png), png);
     EXPECT_FALSE(std::filesystem::exists(png));

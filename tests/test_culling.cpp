@@ -140,9 +140,7 @@ TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
         renderer.camera = render::cameraOnPath(render::CameraPath::FlyOver, shape, 160.0f / 90.0f, seconds);
         renderer.renderFrame(seconds);
         renderer.finish();
-        const gpu::CullUniforms uniforms = render::makeCullUniforms(
-            options.cull, renderer.camera.viewProjection(160.0f / 90.0f), renderer.camera.eye,
-            renderer.camera.verticalFov, 90, crowd.size(), renderer.drawLists().bucketCount(), 65535);
+        const gpu::CullUniforms uniforms = renderer.cullUniforms();
         std::vector<std::uint32_t> cpuState = before;
         const crowd::VisibleLists expected =
             crowd::cullOnCpu(uniforms, renderer.buffers().records(), renderer.pool().models(), cpuState);
@@ -253,6 +251,7 @@ TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) 
     frame::RendererOptions options;
     options.size = {96, 64};
     options.method = skin::Method::Compute;
+    options.shadows = false;  // the view alone decides (with shadows, casters outside it are kept)
     frame::CrowdRenderer renderer(*context, crowd, options);
     renderer.camera = camera;
     renderer.renderFrame(0.0f);

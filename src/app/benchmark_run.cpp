@@ -20,6 +20,7 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     rendererOptions.cull = options.scene.cull;
+    rendererOptions.shadows = options.scene.shadows;
     rendererOptions.passClock = options.passClock;
     frame::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = crowdShape(crowd);
@@ -35,7 +36,7 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     RunSummary summary = summarize(renderer.stats(), options.warmup);
     summary.scene = scene.scene;
     summary.culling = std::string(render::cullModeName(options.scene.cull.mode)) + ", LOD " +
-                      (options.scene.cull.lod ? "on" : "off");
+                      (options.scene.cull.lod ? "on" : "off") + ", shadows " + (options.scene.shadows ? "on" : "off");
     summary.model = modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = options.count;

@@ -31,6 +31,7 @@ usage: crowd-bench [options]
                        --counts is given
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
+  --shadows on|off     the sun's shadow map (default on; Table 1 too)
   --start SECONDS      scene time of the first frame (where on the scene's camera path to measure)
   --models LIST        comma-separated models, each measured alone (default soldier,horse)
   --asset-root DIR     let glTF files' buffers and images come from anywhere inside DIR (default:
@@ -88,7 +89,7 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     BenchOptions o;
-    bool startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
+    bool shadowsGiven = false, startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
     for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& flag = args[i];
@@ -104,13 +105,18 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             const app::ScenePreset& preset = app::findScenePreset(next());
             const render::CullSettings keep = o.scene.cull;
             const float keepStart = o.scene.startSeconds;
+            const bool keepShadows = o.scene.shadows;
             o.scene = app::parseRenderOptions({"--scene", preset.name});
             if (lodGiven) o.scene.cull.lod = keep.lod;
             if (cullGiven) o.scene.cull.mode = keep.mode;
             if (startGiven) o.scene.startSeconds = keepStart;
+            if (shadowsGiven) o.scene.shadows = keepShadows;
             if (!modelsGiven) o.models = {preset.models};
             if (!countsGiven) o.counts = {preset.count};
             sceneGiven = true;
+        } else if (flag == "--shadows") {
+            o.scene.shadows = app::parseRenderOptions({"--shadows", next()}).shadows;
+            shadowsGiven = true;
         } else if (flag == "--start") {
             o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, 1e6f);
             startGiven = true;
@@ -219,9 +225,10 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    std::printf("scene %s: culling %s, LOD %s, camera %s from %.1f s\n", options.scene.scene.scene.c_str(),
+    std::printf("scene %s: culling %s, LOD %s, shadows %s, camera %s from %.1f s\n", options.scene.scene.scene.c_str(),
                 render::cullModeName(options.scene.cull.mode), options.scene.cull.lod ? "on" : "off",
-                render::cameraPathName(options.scene.camera), options.scene.startSeconds);
+                options.scene.shadows ? "on" : "off", render::cameraPathName(options.scene.camera),
+                options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);
     app::printPassTable(results);
 

@@ -103,6 +103,7 @@ int run(const app::RenderOptions& options) {
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     rendererOptions.cull = options.cull;
+    rendererOptions.shadows = options.shadows;
     frame::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = app::crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
@@ -119,7 +120,8 @@ int run(const app::RenderOptions& options) {
     app::RunSummary summary = app::summarize(recent.frames(), 0);
     summary.frames = options.frames;
     summary.scene = options.scene.scene;
-    summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off");
+    summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off") +
+                      ", shadows " + (options.shadows ? "on" : "off");
     summary.model = app::modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = crowd.size();

@@ -35,6 +35,7 @@ usage: crowd-render [options]
                           no culling (default gpu)
   --lod-thresholds A,B    LOD 0 while a character's pose sphere is at least A pixels across, LOD 1
                           while at least B, else LOD 2 (default 150,50)
+  --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
   --start SECONDS         scene time of the first frame: where on the camera path (and in the clips)
                           the run begins (default 0)
   --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
@@ -160,6 +161,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--model") options.scene.model = next();
         else if (flag == "--lod") options.cull.lod = parseOnOff(flag, next());
         else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
+        else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
         else if (flag == "--start") options.startSeconds = parseNumber(flag, next(), 0.0f, 1e6f);
         else if (flag == "--lod-hysteresis") options.cull.hysteresis = parseNumber(flag, next(), 0.0f, 0.5f);
         else if (flag == "--cull") {

@@ -29,7 +29,8 @@ struct RenderOptions {
     SceneOptions scene;
     render::CullSettings cull;
     render::CameraPath camera = render::CameraPath::Framed;
-    float startSeconds = 0.0f;  // scene time of the first frame (where on the camera path a run begins)
+    float startSeconds = 0.0f;
+    bool shadows = true;  // the directional light's shadow map  // scene time of the first frame (where on the camera path a run begins)
     skin::Method method = skin::Method::TwoPass;
     std::uint32_t frames = 30;
     VkExtent2D size{1280, 720};

@@ -29,6 +29,14 @@ bool sphereInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere) {
     return true;
 }
 
+bool casterInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere, const glm::vec3& towardsLight) {
+    for (int i = 0; i < 6; ++i)
+        if (glm::dot(glm::vec3(planes[i]), glm::vec3(sphere)) + planes[i].w < -sphere.w &&
+            glm::dot(glm::vec3(planes[i]), towardsLight) >= 0.0f)
+            return false;
+    return true;
+}
+
 float projectedDiameter(const glm::vec4& sphere, const glm::vec4& camera) {
     const float d = glm::distance(glm::vec3(sphere), glm::vec3(camera));
     return d > sphere.w ? 2.0f * sphere.w * camera.w / d : 3.0e38f;
@@ -51,7 +59,9 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
     for (std::uint32_t c = 0; c < characters.size(); ++c) {
         const gpu::CharacterRecord& character = characters[c];
         const glm::vec4 sphere = worldSphere(character, models[character.ids.x]);
-        const bool visible = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
+        const bool visible = cull.flags.y == 0u ||
+                             (cull.limits.y != 0u ? casterInFrustum(cull.planes, sphere, glm::vec3(cull.light))
+                                                  : sphereInFrustum(cull.planes, sphere));
         std::uint32_t lod = 0;
         if (cull.flags.z != 0u) lod = chooseLod(projectedDiameter(sphere, cull.camera), lodState[c], cull.lod);
         lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;

@@ -19,6 +19,7 @@ std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProjection);
 
 glm::vec4 worldSphere(const gpu::CharacterRecord& character, const gpu::ModelRecord& model);
 bool sphereInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere);
+bool casterInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere, const glm::vec3& towardsLight);
 float projectedDiameter(const glm::vec4& sphere, const glm::vec4& camera);
 std::uint32_t lodForSize(float size, const glm::vec4& lod, float scale);
 std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod);

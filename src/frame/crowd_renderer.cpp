@@ -28,13 +28,16 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       target_(std::make_unique<render::RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
-      scene_(context, options.framesInFlight, pool_),
+      shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
+      shadowMap_(context, options.shadowMapSize),
+      scene_(context, options.framesInFlight, pool_, shadowMap_),
       draw_(context, pool_, buffers_, lists_, scene_.setLayout()),
       timer_(context, options.framesInFlight, options.passClock),
       method_(createMethod(options.method)),
       cull_(options.cull),
+      shadows_(options.shadows),
       frames_(options.framesInFlight) {
-    camera = render::frameCrowd(crowd.center(), crowd.radius(), crowd.tallestHeight(), aspectOf(options.size));
+    camera = render::frameCrowd(shape_.center, shape_.radius, shape_.characterHeight, aspectOf(options.size));
     for (Frame& frame : frames_) {
         VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         allocate.commandPool = context.commandPool;
@@ -94,28 +97,59 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool up
     recordCulling(cmd, slot);
     timer_.mark(cmd, "cull");
     method_->recordSkinning(cmd, timer_);
+    recordShadows(cmd, slot);
     recordScene(cmd, slot);
     timer_.mark(cmd, "draw");
     if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());
 }
 
-void CrowdRenderer::recordCulling(VkCommandBuffer cmd, std::uint32_t slot) {
+gpu::CullUniforms CrowdRenderer::cullUniforms() const {
     const VkExtent2D extent = target_->extent();
-    const gpu::CullUniforms uniforms = render::makeCullUniforms(
+    gpu::CullUniforms uniforms = render::makeCullUniforms(
         cull_, camera.viewProjection(aspectOf(extent)), camera.eye, camera.verticalFov, extent.height, crowd_.size(),
         lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
+    // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too.
+    uniforms.limits.y = shadows_ ? 1u : 0u;
+    uniforms.light = glm::vec4(render::lightDirection(), 0.0f);
+    return uniforms;
+}
+
+void CrowdRenderer::recordCulling(VkCommandBuffer cmd, std::uint32_t slot) {
     const bool perCharacterDraws = method_->drawInput() == render::DrawInput::BindPosePerCharacter;
-    cullPass_.record(cmd, slot, uniforms, cull_.mode, method_->fixedLayout(), perCharacterDraws);
+    cullPass_.record(cmd, slot, cullUniforms(), cull_.mode, method_->fixedLayout(), perCharacterDraws);
+}
+
+glm::mat4 CrowdRenderer::lightViewProjection() const {
+    return render::lightViewProjection(camera, aspectOf(target_->extent()), shape_, render::lightDirection());
+}
+
+void CrowdRenderer::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
+    if (!shadows_) {
+        if (!shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
+        shadowMapReady_ = true;
+        return;
+    }
+    // The same draws, skinned vertices and methods as the colour pass, seen from the light.
+    scene_.updateLight(slot, render::makeSceneUniforms(lightViewProjection(), pool_.palette(), pool_.texturedMaterials(),
+                                                       0.0f));
+    shadowMap_.beginRendering(cmd);
+    const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
+    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
+                 render::CharacterDraw::Target::ShadowMap);
+    shadowMap_.endRendering(cmd);
+    shadowMapReady_ = true;
+    timer_.mark(cmd, "shadow");
 }
 
 void CrowdRenderer::recordScene(VkCommandBuffer cmd, std::uint32_t slot) {
     scene_.update(slot, render::makeSceneUniforms(camera.viewProjection(aspectOf(target_->extent())), pool_.palette(),
-                                                  pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f)));
+                                                  pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f),
+                                                  lightViewProjection(), shadows_, shadowMap_.size()));
     const float clear[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
     target_->beginRendering(cmd, clear);
     gpu::setViewportAndScissor(cmd, target_->extent());
-    const glm::vec3 center = crowd_.center();
-    const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(center.x, 0.0f, center.z, camera.farPlane)};
+    const render::ScenePush push{glm::vec4(camera.eye, 1.0f),
+                                 glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
     scene_.recordGround(cmd, slot, push);
     draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push);
     target_->endRendering(cmd);
@@ -186,7 +220,8 @@ std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
     std::vector<skin::MemoryItem> items = {{"geometry pool (vertices, LOD indices, textures)", pool_.bytes()},
                                            {"character records and bone matrices", buffers_.deviceBytes()},
                                            {"culling lists and draw commands", lists_.bytes()},
-                                           {"render target", target_->bytes()}};
+                                           {"render target", target_->bytes()},
+                                           {"shadow map", shadowMap_.bytes()}};
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }

@@ -19,6 +19,7 @@
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
 #include "render/render_target.h"
+#include "render/shadow_map.h"
 #include "render/scene_pass.h"
 #include "skin/skinning_method.h"
 
@@ -30,6 +31,8 @@ struct RendererOptions {
     VkExtent2D size{1280, 720};
     skin::Method method = skin::Method::TwoPass;
     render::CullSettings cull;
+    bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
+    std::uint32_t shadowMapSize = 2048;  // texels per side
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
@@ -68,6 +71,8 @@ public:
     // Culling and LOD settings of the next frames (takes effect at once).
     void setCull(const render::CullSettings& cull) { cull_ = cull; }
     const render::CullSettings& cull() const { return cull_; }
+    void setShadows(bool on) { shadows_ = on; }
+    bool shadows() const { return shadows_; }
     // Hands over the statistics collected so far and starts a new list.
     std::vector<FrameStats> takeStats() { return std::exchange(stats_, {}); }
     // Waits for every frame in flight and collects its statistics.
@@ -82,6 +87,8 @@ public:
     const render::DrawLists& drawLists() const { return lists_; }
     const render::CullPass& cullPass() const { return cullPass_; }
     VkExtent2D extent() const { return target_->extent(); }
+    // What the cull pass gets for the current camera and settings (the CPU reference takes the same).
+    gpu::CullUniforms cullUniforms() const;
     // Device memory of the crowd's buffers, the method's resources and the render target.
     std::vector<skin::MemoryItem> memory() const;
 
@@ -95,7 +102,9 @@ private:
     void collect(Frame& frame, std::uint32_t slot);
     void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks);
     void recordCulling(VkCommandBuffer cmd, std::uint32_t slot);
+    void recordShadows(VkCommandBuffer cmd, std::uint32_t slot);
     void recordScene(VkCommandBuffer cmd, std::uint32_t slot);
+    glm::mat4 lightViewProjection() const;
     void submit(Frame& frame, const PresentHooks* hooks);
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
 
@@ -107,11 +116,15 @@ private:
     render::CullPass cullPass_;
     std::unique_ptr<render::RenderTarget> target_;
     std::uint32_t maxTargetDimension_;
+    render::CrowdShape shape_;
+    render::ShadowMap shadowMap_;
     render::ScenePass scene_;
     render::CharacterDraw draw_;
     gpu::GpuTimer timer_;
     std::unique_ptr<skin::SkinningMethod> method_;
     render::CullSettings cull_;
+    bool shadows_;
+    bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     std::vector<Frame> frames_;
     std::vector<FrameStats> stats_;
     std::uint64_t frameIndex_ = 0;

@@ -22,10 +22,11 @@ static_assert(offsetof(DrawIndexedCommand, vertexOffset) == offsetof(VkDrawIndex
 static_assert(offsetof(DrawIndexedCommand, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
 // emitDispatch is read by vkCmdDispatchIndirect: 16-byte aligned after four uints.
 static_assert(sizeof(DrawTotals) == 32 && offsetof(DrawTotals, emitDispatch) == 16);
-static_assert(sizeof(CullUniforms) == 6 * 16 + 4 * 16 && offsetof(CullUniforms, camera) == 96 &&
-              offsetof(CullUniforms, limits) == 144);
+static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 && offsetof(CullUniforms, camera) == 96 &&
+              offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160);
 static_assert(sizeof(SkinPassParams) == 32);
 static_assert(offsetof(SceneUniforms, materialFlags) == 112 && offsetof(SceneUniforms, palette) == 128 &&
-              sizeof(SceneUniforms) == 128 + 16 * MAX_MATERIALS);
+              offsetof(SceneUniforms, lightViewProjection) == 128 + 16 * MAX_MATERIALS &&
+              sizeof(SceneUniforms) == 128 + 16 * MAX_MATERIALS + 80);
 
 }  // namespace gpu

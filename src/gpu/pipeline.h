@@ -26,6 +26,9 @@ struct GraphicsPipelineDesc {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;  // no depth attachment when undefined
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
+    // Depth bias (shadow maps): constant in depth units and per unit of slope; off when both are 0.
+    float depthBiasConstant = 0.0f;
+    float depthBiasSlope = 0.0f;
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     // Specialization constants of the vertex stage, ids 0, 1, ... in order.
     std::vector<std::uint32_t> vertexConstants;

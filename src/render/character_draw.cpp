@@ -4,6 +4,8 @@
 
 #include "draw.frag.spv.h"
 #include "draw.vert.spv.h"
+#include "render/shadow_map.h"
+#include "shadow.frag.spv.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -49,10 +51,11 @@ CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPo
 CharacterDraw::~CharacterDraw() { release(); }
 
 void CharacterDraw::release() {
-    for (VkPipeline* p : {&instanced_, &perCharacter_, &skinned_}) {
-        if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
-        *p = VK_NULL_HANDLE;
-    }
+    for (VkPipeline* pipelines : {colour_, shadow_})
+        for (int i = 0; i < 3; ++i) {
+            if (pipelines[i]) vkDestroyPipeline(context_.device, pipelines[i], nullptr);
+            pipelines[i] = VK_NULL_HANDLE;
+        }
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     layout_ = VK_NULL_HANDLE;
     boneBlock_.reset();
@@ -63,17 +66,30 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout) {
     const VkDescriptorSetLayout sets[3] = {sceneSetLayout, crowdSet_->layout(), boneBlock_->layout()};
     const VkPushConstantRange push{kDrawStages, 0, sizeof(ScenePush)};
     layout_ = gpu::createPipelineLayout(context_, sets, {&push, 1});
-    gpu::GraphicsPipelineDesc desc;
-    desc.fragmentShader = draw_frag_spv;
-    desc.colorFormats = {kColorFormat};
-    desc.depthFormat = kDepthFormat;
-    desc.layout = layout_;
+    gpu::GraphicsPipelineDesc colour;
+    colour.fragmentShader = draw_frag_spv;
+    colour.colorFormats = {kColorFormat};
+    colour.depthFormat = kDepthFormat;
+    colour.layout = layout_;
+    createPipelines(colour, colour_);
+    // The shadow map: depth only, both faces (the light's projection is not mirrored like the camera's),
+    // biased by slope so that lit surfaces do not shadow themselves.
+    gpu::GraphicsPipelineDesc shadow = colour;
+    shadow.fragmentShader = shadow_frag_spv;
+    shadow.colorFormats = {};
+    shadow.depthFormat = kShadowFormat;
+    shadow.cullMode = VK_CULL_MODE_NONE;
+    shadow.depthBiasConstant = 1.0f;
+    shadow.depthBiasSlope = 1.5f;
+    createPipelines(shadow, shadow_);
+}
 
+void CharacterDraw::createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3]) {
     // Skinned vertices: positions and normals are two streams of the same buffer.
     desc.vertexShader = draw_vert_spv;
     desc.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-    skinned_ = gpu::createGraphicsPipeline(context_, desc);
+    pipelines[static_cast<int>(DrawInput::SkinnedVertices)] = gpu::createGraphicsPipeline(context_, desc);
 
     // Bind-pose vertices, skinned while drawing.
     desc.bindings = {{0, sizeof(gpu::SkinVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -83,10 +99,10 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout) {
                        {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::SkinVertex, weights)}};
     desc.vertexShader = skin_vs_vert_spv;
     desc.vertexConstants = {crowd_.largestBoneBlock()};
-    perCharacter_ = gpu::createGraphicsPipeline(context_, desc);
+    pipelines[static_cast<int>(DrawInput::BindPosePerCharacter)] = gpu::createGraphicsPipeline(context_, desc);
     desc.vertexShader = skin_vs_instanced_vert_spv;
     desc.vertexConstants = {};
-    instanced_ = gpu::createGraphicsPipeline(context_, desc);
+    pipelines[static_cast<int>(DrawInput::BindPoseInstanced)] = gpu::createGraphicsPipeline(context_, desc);
 }
 
 void CharacterDraw::bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescriptorSet sceneSet,
@@ -99,12 +115,13 @@ void CharacterDraw::bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescr
 }
 
 void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices,
-                           VkDescriptorSet sceneSet, const ScenePush& push) const {
+                           VkDescriptorSet sceneSet, const ScenePush& push, Target target) const {
     constexpr std::uint32_t stride = sizeof(gpu::DrawIndexedCommand);
     const VkDeviceSize zero = 0;
+    const VkPipeline pipeline = (target == Target::Colour ? colour_ : shadow_)[static_cast<int>(input)];
     switch (input) {
         case DrawInput::SkinnedVertices: {
-            bindCommon(cmd, skinned_, sceneSet, push);
+            bindCommon(cmd, pipeline, sceneSet, push);
             const VkBuffer buffers[2] = {vertices.buffer->buffer, vertices.buffer->buffer};
             const VkDeviceSize offsets[2] = {0, vertices.normalsOffset};
             vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
@@ -113,12 +130,12 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
             break;
         }
         case DrawInput::BindPoseInstanced:
-            bindCommon(cmd, instanced_, sceneSet, push);
+            bindCommon(cmd, pipeline, sceneSet, push);
             vkCmdBindVertexBuffers(cmd, 0, 1, &pool_.bindVertices().buffer, &zero);
             vkCmdDrawIndexedIndirect(cmd, lists_.bucketDraws().buffer, 0, lists_.bucketCount(), stride);
             break;
         case DrawInput::BindPosePerCharacter: {
-            bindCommon(cmd, perCharacter_, sceneSet, push);
+            bindCommon(cmd, pipeline, sceneSet, push);
             vkCmdBindVertexBuffers(cmd, 0, 1, &pool_.bindVertices().buffer, &zero);
             // The paper's shape: the CPU binds each character's bones and issues its draw; the GPU has
             // written each slot's command (instanceCount 0 when culled, its LOD's range otherwise).

@@ -12,6 +12,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/descriptor_bundle.h"
+#include "gpu/pipeline.h"
 #include "render/crowd_buffers.h"
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
@@ -42,12 +43,17 @@ public:
     CharacterDraw(const CharacterDraw&) = delete;
     CharacterDraw& operator=(const CharacterDraw&) = delete;
 
-    // Records the characters' draws inside a rendering pass whose scene set is `sceneSet`.
+    // What a draw renders into: the colour pass's target, or the shadow map (depth only).
+    enum class Target { Colour, ShadowMap };
+    // Records the characters' draws inside a rendering pass whose scene set is `sceneSet` (for the
+    // shadow map: the scene set seen from the light).
     void record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices, VkDescriptorSet sceneSet,
-                const ScenePush& push) const;
+                const ScenePush& push, Target target = Target::Colour) const;
 
 private:
     void createPipelines(VkDescriptorSetLayout sceneSetLayout);
+    // The three pipelines (skinned, per character, instanced) for one target's formats.
+    void createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3]);
     void release();
     void bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescriptorSet sceneSet, const ScenePush& push) const;
 
@@ -58,7 +64,8 @@ private:
     std::unique_ptr<gpu::DescriptorBundle> crowdSet_;   // set 1: models, characters, visible lists, bones
     std::unique_ptr<gpu::DescriptorBundle> boneBlock_;  // set 2: one character's bones (dynamic offset)
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline skinned_ = VK_NULL_HANDLE, perCharacter_ = VK_NULL_HANDLE, instanced_ = VK_NULL_HANDLE;
+    VkPipeline colour_[3] = {};  // by DrawInput
+    VkPipeline shadow_[3] = {};
 };
 
 }  // namespace render

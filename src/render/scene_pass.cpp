@@ -9,23 +9,28 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/geometry_pool.h"
+#include "render/shadow_map.h"
 #include "render/render_target.h"
 
 namespace render {
 
-ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool)
+ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
+                     const ShadowMap& shadowMap)
     : context_(context) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    const VkDescriptorSetLayoutBinding bindings[3] = {
+    const VkDescriptorSetLayoutBinding bindings[4] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
         {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_TEXTURES, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
     setLayout_ = gpu::createSetLayout(context, bindings);
-    const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight},
-                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, framesInFlight * MAX_TEXTURES},
-                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, framesInFlight}};
-    pool_ = gpu::createDescriptorPool(context, sizes, framesInFlight);
-    for (std::uint32_t i = 0; i < framesInFlight; ++i) {
+    // One set per frame in flight seen from the camera, then one per frame seen from the light.
+    const std::uint32_t sets = 2 * framesInFlight;
+    const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets},
+                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets * (MAX_TEXTURES + 1)},
+                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sets}};
+    pool_ = gpu::createDescriptorPool(context, sizes, sets);
+    for (std::uint32_t i = 0; i < sets; ++i) {
         uniforms_.push_back(gpu::createBuffer(context, sizeof(gpu::SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                               gpu::MemoryUse::HostUpload, "scene uniforms"));
         sets_.push_back(gpu::allocateSet(context, pool_, setLayout_));
@@ -34,6 +39,7 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         writeTextures(sets_.back(), pool);
         gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                    pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
+        writeShadowMap(sets_.back(), shadowMap);
     }
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ScenePush)};
     groundLayout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
@@ -73,6 +79,21 @@ void ScenePass::update(std::uint32_t frameSlot, const gpu::SceneUniforms& unifor
     std::memcpy(uniforms_[frameSlot].mapped, &uniforms, sizeof uniforms);
 }
 
+void ScenePass::updateLight(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms) {
+    std::memcpy(uniforms_[uniforms_.size() / 2 + frameSlot].mapped, &uniforms, sizeof uniforms);
+}
+
+void ScenePass::writeShadowMap(VkDescriptorSet set, const ShadowMap& shadowMap) const {
+    const VkDescriptorImageInfo image{shadowMap.sampler(), shadowMap.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set;
+    write.dstBinding = 3;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &image;
+    vkUpdateDescriptorSets(context_.device, 1, &write, 0, nullptr);
+}
+
 void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundPipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundLayout_, 0, 1, &sets_[frameSlot], 0, nullptr);
@@ -82,11 +103,14 @@ void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const
 }
 
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     const glm::uvec4& texturedMaterials, float fogDensity) {
+                                     const glm::uvec4& texturedMaterials, float fogDensity,
+                                     const glm::mat4& lightViewProjection, bool shadows, std::uint32_t shadowMapSize) {
     gpu::SceneUniforms u{};
+    u.lightViewProjection = lightViewProjection;
+    u.shadow = glm::vec4(shadows ? 1.0f : 0.0f, 0.0015f, 1.0f / static_cast<float>(shadowMapSize), 0.0f);
     u.materialFlags = texturedMaterials;
     u.viewProjection = viewProjection;
-    u.lightDirection = glm::vec4(glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f)), 0.35f);
+    u.lightDirection = glm::vec4(lightDirection(), 0.35f);
     u.skyColor = glm::vec4(kSkyColor, fogDensity);
     u.groundColor = glm::vec4(0.3f, 0.42f, 0.22f, 2.0f);
     for (std::size_t i = 0; i < std::min<std::size_t>(palette.size(), MAX_MATERIALS); ++i) u.palette[i] = palette[i];

@@ -15,6 +15,7 @@ namespace gpu { class VulkanContext; }
 namespace render {
 
 class GeometryPool;
+class ShadowMap;
 
 // The clear colour behind everything and the colour distant things fade into (linear RGB).
 inline constexpr glm::vec3 kSkyColor{0.55f, 0.7f, 0.9f};
@@ -27,18 +28,23 @@ struct ScenePush {
 
 class ScenePass {
 public:
-    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool);
+    ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
+              const ShadowMap& shadowMap);
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;
 
     VkDescriptorSetLayout setLayout() const { return setLayout_; }
     VkDescriptorSet set(std::uint32_t frameSlot) const { return sets_[frameSlot]; }
+    // The same layout seen from the light: its uniforms' viewProjection is the light's (the shadow pass).
+    VkDescriptorSet lightSet(std::uint32_t frameSlot) const { return sets_[sets_.size() / 2 + frameSlot]; }
     void update(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms);
+    void updateLight(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms);
     void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
 
 private:
     void writeTextures(VkDescriptorSet set, const GeometryPool& pool) const;
+    void writeShadowMap(VkDescriptorSet set, const ShadowMap& shadowMap) const;
 
     const gpu::VulkanContext& context_;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
@@ -49,8 +55,11 @@ private:
     VkPipeline groundPipeline_ = VK_NULL_HANDLE;
 };
 
-// Scene uniforms for a camera and the pooled palette: sun from the upper left, pale sky, grass.
+// Scene uniforms for a camera and the pooled palette: sun from the upper left, pale sky, grass; and the
+// shadow map's transform (shadows off: `shadows` false).
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     const glm::uvec4& texturedMaterials, float fogDensity);
+                                     const glm::uvec4& texturedMaterials, float fogDensity,
+                                     const glm::mat4& lightViewProjection = glm::mat4(1.0f), bool shadows = false,
+                                     std::uint32_t shadowMapSize = 1);
 
 }  // namespace render

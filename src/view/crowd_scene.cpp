@@ -12,8 +12,8 @@ namespace {
 }  // namespace
 
 CrowdScene::CrowdScene(const gpu::VulkanContext& context, const app::SceneOptions& scene, skin::Method method,
-                       const render::CullSettings& cull, VkExtent2D size)
-    : context_(context), scene_(scene), method_(method), cull_(cull) {
+                       const render::CullSettings& cull, bool shadows, VkExtent2D size)
+    : context_(context), scene_(scene), method_(method), cull_(cull), shadows_(shadows) {
     rebuild(scene, size);
 }
 
@@ -42,6 +42,7 @@ void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     options.size = size;
     options.method = method_;
     options.cull = cull_;
+    options.shadows = shadows_;
     renderer_ = std::make_unique<frame::CrowdRenderer>(context_, *crowd_, options);
     scene_ = scene;
     notes_.insert(notes_.end(), notes.begin(), notes.end());

@@ -23,7 +23,7 @@ class CrowdScene {
 public:
     // Throws gpu::Error (one line) for a model, clip or crowd size that cannot be shown.
     CrowdScene(const gpu::VulkanContext& context, const app::SceneOptions& scene, skin::Method method,
-               const render::CullSettings& cull, VkExtent2D size);
+               const render::CullSettings& cull, bool shadows, VkExtent2D size);
 
     // Builds the crowd for new scene options. Checks everything that can be checked (model, clip,
     // memory) before the current crowd is released, and throws gpu::Error keeping it when a check
@@ -32,6 +32,8 @@ public:
     // Switches the skinning method; throws gpu::Error, keeping the current one, when the crowd
     // would not fit in device memory with it.
     void setMethod(skin::Method method, VkExtent2D size);
+    // Shadows on or off, now and for crowds rebuilt later.
+    void setShadows(bool on) { shadows_ = on, renderer_->setShadows(on); }
 
     frame::CrowdRenderer& renderer() { return *renderer_; }
     const frame::CrowdRenderer& renderer() const { return *renderer_; }
@@ -50,6 +52,7 @@ private:
     app::SceneOptions scene_;
     skin::Method method_;
     render::CullSettings cull_;
+    bool shadows_;
     app::CrowdModels models_;
     std::unique_ptr<crowd::Crowd> crowd_;
     std::unique_ptr<frame::CrowdRenderer> renderer_;

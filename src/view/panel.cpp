@@ -126,6 +126,8 @@ void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
         changed = true;
     }
     if (changed) requests.cull = cull;
+    bool shadows = state.shadows;
+    if (ImGui::Checkbox("shadows", &shadows)) requests.shadows = shadows;
 }
 
 void Panel::drawCamera(const PanelState& state, PanelRequests& requests) {

@@ -23,6 +23,7 @@ struct PanelState {
     std::uint32_t maxCharacters = 1;
     render::LodCounts lods;      // drawn in the newest frame, per level of detail
     render::CullSettings cull;
+    bool shadows = true;
     bool scenePath = false;
     skin::Method method = skin::Method::TwoPass;
     std::string model;
@@ -44,6 +45,7 @@ struct PanelRequests {
     std::optional<std::optional<std::uint32_t>> follow;  // a character, or nullopt inside: stop following
     std::optional<render::CullSettings> cull;  // LOD or culling switched
     std::optional<bool> scenePath;
+    std::optional<bool> shadows;
     bool resetCamera = false;
     bool screenshot = false;
 };

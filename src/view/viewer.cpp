@@ -49,7 +49,8 @@ Viewer::Viewer(const ViewerOptions& options)
                                    Window::requiredInstanceExtensions(), true}),
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
-      scene_(context_, options.render.scene, options.render.method, options.render.cull, swapchain_.extent()) {
+      scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
+             swapchain_.extent()) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
     controls_.scenePath = options.render.camera != render::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
@@ -209,6 +210,7 @@ void Viewer::apply(const PanelRequests& requests) {
     if (requests.follow) follow(*requests.follow);
     if (requests.scenePath) controls_.scenePath = *requests.scenePath;
     if (requests.cull) scene_.renderer().setCull(*requests.cull);
+    if (requests.shadows) scene_.setShadows(*requests.shadows);
     try {
         if (requests.method) {
             scene_.setMethod(*requests.method, swapchain_.extent());
@@ -305,6 +307,7 @@ PanelState Viewer::panelState() const {
     state.maxCharacters = maxCharacters_;
     state.lods = history_.latestLods();
     state.cull = scene_.renderer().cull();
+    state.shadows = scene_.renderer().shadows();
     state.scenePath = controls_.scenePath;
     state.method = scene_.method();
     state.model = scene_.options().model;

@@ -1,0 +1,98 @@
+#include "render/shadow_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gpu/barriers.h"
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+
+namespace render {
+
+glm::vec3 lightDirection() { return glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f)); }
+
+glm::mat4 lightViewProjection(const Camera& camera, float aspect, const CrowdShape& crowd,
+                              const glm::vec3& towardsLight) {
+    // The camera's frustum from its near plane to the shadow distance, in world space.
+    const float reach = glm::distance(camera.eye, crowd.center) + crowd.radius;
+    const float distance = std::clamp(reach, camera.nearPlane * 2.0f, 60.0f * crowd.characterHeight);
+    glm::mat4 projection = glm::perspective(camera.verticalFov, aspect, camera.nearPlane, distance);
+    projection[1][1] *= -1.0f;
+    const glm::mat4 inverse = glm::inverse(projection * glm::lookAt(camera.eye, camera.target, glm::vec3(0, 1, 0)));
+    const glm::vec3 centre = 0.5f * (camera.eye + camera.target);
+    const glm::mat4 view = glm::lookAt(centre + towardsLight, centre, glm::vec3(0.0f, 1.0f, 0.0f));
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec4 clip((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : 0.0f, 1.0f);
+        glm::vec4 world = inverse * clip;
+        world /= world.w;
+        world.y = std::max(world.y, 0.0f);  // nothing to shadow below the ground
+        const glm::vec3 p = glm::vec3(view * world);
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    // Casters stand up to a few character heights above the region, towards the light (+z in view space).
+    hi.z += 4.0f * crowd.characterHeight + crowd.radius * 0.05f;
+    lo.z -= crowd.characterHeight;
+    return glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z) * view;
+}
+
+ShadowMap::ShadowMap(const gpu::VulkanContext& context, std::uint32_t size) : context_(context) {
+    image_ = gpu::createImage2D(context, {size, size}, kShadowFormat,
+                                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                "shadow map");
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = VK_FILTER_LINEAR;
+    info.minFilter = VK_FILTER_LINEAR;
+    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;  // outside the map: lit
+    info.compareEnable = VK_TRUE;
+    info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    const VkResult result = vkCreateSampler(context.device, &info, nullptr, &sampler_);
+    if (result != VK_SUCCESS) {
+        gpu::destroyImage(context, image_);
+        VK_CHECK(result);
+    }
+}
+
+ShadowMap::~ShadowMap() {
+    vkDestroySampler(context_.device, sampler_, nullptr);
+    gpu::destroyImage(context_, image_);
+}
+
+void ShadowMap::beginRendering(VkCommandBuffer cmd) const {
+    // The previous frame's shading must be done sampling before the map is drawn again.
+    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0},
+                      {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT},
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = image_.view;
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    info.renderArea = {{0, 0}, image_.extent};
+    info.layerCount = 1;
+    info.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &info);
+    gpu::setViewportAndScissor(cmd, image_.extent);
+}
+
+void ShadowMap::endRendering(VkCommandBuffer cmd) const {
+    vkCmdEndRendering(cmd);
+    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                      {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
+                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+void ShadowMap::clear(VkCommandBuffer cmd) const {
+    beginRendering(cmd);
+    endRendering(cmd);
+}
+
+}  // namespace render

@@ -1,0 +1,53 @@
+#pragma once
+// The directional light's shadow map: a depth image the characters are drawn into from the light
+// (consuming the same skinned vertices as the colour pass), sampled with depth comparison by the
+// character and ground shading. One map covers the camera's view out to a shadow distance; beyond it
+// nothing is shadowed (a single cascade, see the README).
+#include <cstdint>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gpu/image.h"
+#include "render/camera.h"
+#include "render/camera_path.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
+
+// The light: a unit vector towards the sun (the lighting's), and the ambient term.
+glm::vec3 lightDirection();
+
+// Where the map looks: an orthographic view along the light that holds the camera's view out to the
+// shadow distance (the far edge of the crowd, at most 60 character heights), extended towards the
+// light so that casters above that region are in it.
+glm::mat4 lightViewProjection(const Camera& camera, float aspect, const CrowdShape& crowd, const glm::vec3& towardsLight);
+
+class ShadowMap {
+public:
+    ShadowMap(const gpu::VulkanContext& context, std::uint32_t size);
+    ~ShadowMap();
+    ShadowMap(const ShadowMap&) = delete;
+    ShadowMap& operator=(const ShadowMap&) = delete;
+
+    VkImageView view() const { return image_.view; }
+    VkSampler sampler() const { return sampler_; }
+    std::uint32_t size() const { return image_.extent.width; }
+    VkDeviceSize bytes() const { return image_.bytes; }
+    // Begins depth-only rendering into the map, cleared to the far plane.
+    void beginRendering(VkCommandBuffer cmd) const;
+    // Ends it and leaves the map ready for the fragment shaders to sample.
+    void endRendering(VkCommandBuffer cmd) const;
+    // Leaves a map that was never rendered ready to sample (shadows off: cleared, so all lit).
+    void clear(VkCommandBuffer cmd) const;
+
+private:
+    const gpu::VulkanContext& context_;
+    gpu::Image image_;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+};
+
+}  // namespace render
