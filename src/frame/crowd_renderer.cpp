@@ -97,8 +97,9 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool up
     recordCulling(cmd, slot);
     timer_.mark(cmd, "cull");
     method_->recordSkinning(cmd, timer_);
-    recordShadows(cmd, slot);
-    recordScene(cmd, slot);
+    const glm::mat4 light = lightViewProjection();  // the shadow pass draws with it, the scene samples with it
+    recordShadows(cmd, slot, light);
+    recordScene(cmd, slot, light);
     timer_.mark(cmd, "draw");
     if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());
 }
@@ -123,14 +124,14 @@ glm::mat4 CrowdRenderer::lightViewProjection() const {
     return render::lightViewProjection(camera, aspectOf(target_->extent()), shape_, render::lightDirection());
 }
 
-void CrowdRenderer::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
+void CrowdRenderer::recordShadows(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection) {
     if (!shadows_) {
         if (!shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
         shadowMapReady_ = true;
         return;
     }
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
-    scene_.updateLight(slot, render::makeSceneUniforms(lightViewProjection(), pool_.palette(), pool_.texturedMaterials(),
+    scene_.updateLight(slot, render::makeSceneUniforms(lightViewProjection, pool_.palette(), pool_.texturedMaterials(),
                                                        0.0f));
     shadowMap_.beginRendering(cmd);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
@@ -141,10 +142,10 @@ void CrowdRenderer::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     timer_.mark(cmd, "shadow");
 }
 
-void CrowdRenderer::recordScene(VkCommandBuffer cmd, std::uint32_t slot) {
+void CrowdRenderer::recordScene(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection) {
     scene_.update(slot, render::makeSceneUniforms(camera.viewProjection(aspectOf(target_->extent())), pool_.palette(),
                                                   pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f),
-                                                  lightViewProjection(), shadows_, shadowMap_.size()));
+                                                  lightViewProjection, shadows_, shadowMap_.size()));
     const float clear[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
     target_->beginRendering(cmd, clear);
     gpu::setViewportAndScissor(cmd, target_->extent());

@@ -87,6 +87,8 @@ public:
     const render::DrawLists& drawLists() const { return lists_; }
     const render::CullPass& cullPass() const { return cullPass_; }
     VkExtent2D extent() const { return target_->extent(); }
+    // Where the crowd stands (measured once: it loops over every character).
+    const render::CrowdShape& shape() const { return shape_; }
     // What the cull pass gets for the current camera and settings (the CPU reference takes the same).
     gpu::CullUniforms cullUniforms() const;
     // Device memory of the crowd's buffers, the method's resources and the render target.
@@ -102,8 +104,8 @@ private:
     void collect(Frame& frame, std::uint32_t slot);
     void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks);
     void recordCulling(VkCommandBuffer cmd, std::uint32_t slot);
-    void recordShadows(VkCommandBuffer cmd, std::uint32_t slot);
-    void recordScene(VkCommandBuffer cmd, std::uint32_t slot);
+    void recordShadows(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
+    void recordScene(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
     glm::mat4 lightViewProjection() const;
     void submit(Frame& frame, const PresentHooks* hooks);
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;

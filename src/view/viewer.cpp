@@ -96,7 +96,7 @@ int Viewer::run() {
         if (controls_.scenePath) {
             // The scene's camera path, as crowd-render flies it (frame N of a script is its frame N).
             const VkExtent2D extent = swapchain_.extent();
-            scene_.renderer().camera = render::cameraOnPath(options_.render.camera, app::crowdShape(scene_.crowd()),
+            scene_.renderer().camera = render::cameraOnPath(options_.render.camera, scene_.renderer().shape(),
                                                             static_cast<float>(extent.width) / extent.height, time);
         }
         const bool lastScripted = options_.scripted && frame + 1 == options_.render.frames;
