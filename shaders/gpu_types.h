@@ -64,7 +64,10 @@ struct CharacterRecord {
     vec4 placement;  // xyz: world position of the model's origin, w: heading (radians about +y; 0 faces +z)
     vec4 tint;       // rgb: colour multiplier (variety), w: uniform scale
     uvec4 ids;       // x: model, y: first BoneRows of its bone block, z: rank among its model's
-                     // characters, w: unused
+                     // characters, w: its clips: bits 0-15 the clip it fades from, 16-31 the clip it
+                     // fades to (the same clip twice when it plays one)
+    vec4 pose;       // x: normalized phase in cycles (both clips of a crossfade are at the same point of
+                     // their cycles, fract(x)), y: weight of the clip faded to (0..1), z, w: unused
 };
 
 // One (model, LOD) bucket, fixed while the crowd is: where its visible characters are listed and

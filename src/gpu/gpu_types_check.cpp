@@ -12,7 +12,8 @@ namespace gpu {
 static_assert(sizeof(SkinVertex) == 64 && offsetof(SkinVertex, joints) == 32 && offsetof(SkinVertex, weights) == 48);
 static_assert(sizeof(BoneRows) == 48);
 static_assert(sizeof(ModelRecord) == 80 && offsetof(ModelRecord, info) == 48 && offsetof(ModelRecord, sphere) == 64);
-static_assert(sizeof(CharacterRecord) == 48 && offsetof(CharacterRecord, tint) == 16 && offsetof(CharacterRecord, ids) == 32);
+static_assert(sizeof(CharacterRecord) == 64 && offsetof(CharacterRecord, tint) == 16 && offsetof(CharacterRecord, ids) == 32 &&
+              offsetof(CharacterRecord, pose) == 48);
 static_assert(sizeof(BucketRecord) == 48 && offsetof(BucketRecord, mesh) == 16 && offsetof(BucketRecord, fixedLayout) == 32);
 // Written with atomics and read one uint at a time: four 4-byte members, an array stride of 16.
 static_assert(sizeof(BucketFrame) == 16 && offsetof(BucketFrame, vertexBase) == 4 && offsetof(BucketFrame, drawBase) == 8);
