@@ -41,9 +41,8 @@ std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, st
         const crowd::Character& c = crowd.characters()[i];
         records[i].placement = glm::vec4(c.position, c.heading);
         records[i].tint = glm::vec4(c.tint, c.scale);
-        records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, c.clip | (c.clip << 16));
-        const float duration = crowd.modelOf(i).clips.empty() ? 0.0f : crowd.modelOf(i).clips[c.clip].duration;
-        records[i].pose = glm::vec4(duration > 0.0f ? c.timeOffset / duration : 0.0f, 0.0f, 0.0f, 0.0f);
+        records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, 0u);
+        crowd.poseRecord(i, 0.0f, records[i]);
     }
     return records;
 }
