@@ -158,9 +158,17 @@ struct MotionRecord {
     uvec4 clips;  // x: clip faded from, y: clip faded to (the model's own clip indices), z, w: unused
 };
 
-// Push constants of the palette pass: which bucket it computes the bones of.
+// Push constants of the palette passes. palette.comp: x: bucket, y: joints of its model, z:
+// characters per workgroup, w: unused. palette_dispatch.comp: x: buckets, y: most workgroups in a
+// dispatch's x dimension, z, w: unused.
 struct PalettePush {
-    uvec4 bucket;  // x: bucket, y: joints of its model, z: characters per workgroup, w: unused
+    uvec4 bucket;
+};
+
+// Push constants of the motion pass.
+struct MotionPush {
+    uvec4 counts;  // x: characters, y: most workgroups in a dispatch's x dimension, z, w: unused
+    vec4 time;     // x: seconds, yzw: unused
 };
 
 // Per-frame parameters of the cull pass (a uniform buffer: the frustum alone is 96 bytes).

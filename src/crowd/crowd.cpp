@@ -81,6 +81,8 @@ std::vector<Character> gridLayout(std::span<const model::SkinnedModel* const> mo
         c.scale = c.model < options.scales.size() ? options.scales[c.model] : 1.0f;
         c.tint = glm::vec3(brightnessVariation(i));
         if (options.scaleVariation > 0.0f) c.scale *= 1.0f + options.scaleVariation * (2.0f * unit(random) - 1.0f);
+        if (options.tintVariation > 0.0f)
+            for (int k = 0; k < 3; ++k) c.tint[k] *= 1.0f + options.tintVariation * (2.0f * unit(random) - 1.0f);
         if (options.formation) {
             c.position = glm::vec3(x, 0.0f, z);
             c.heading = 0.0f;

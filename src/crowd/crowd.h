@@ -48,8 +48,10 @@ struct LayoutOptions {
     std::vector<float> scales;
     // A formation: exact grid, every character facing +z at phase 0 and speed 1 (marching in step).
     bool formation = false;
-    // Each character's scale varies by up to this fraction either way (seeded), so no two match.
+    // Each character's scale varies by up to this fraction either way, and each colour channel of its
+    // tint by up to this one (seeded), so no two match.
     float scaleVariation = 0.0f;
+    float tintVariation = 0.0f;
 };
 
 // Characters on a square grid centred on the origin, facing +z, with seeded jitter of position,

@@ -18,7 +18,7 @@ float aspectOf(VkExtent2D extent) { return static_cast<float>(extent.width) / st
 
 }  // namespace
 
-CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd,
+CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& crowd,
                              const RendererOptions& options)
     : context_(context),
       crowd_(crowd),
@@ -26,6 +26,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       buffers_(context, crowd, options.framesInFlight),
       lists_(context, pool_, buffers_, options.framesInFlight),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
+      animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
       target_(std::make_unique<render::RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
       shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
@@ -35,6 +36,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       timer_(context, options.framesInFlight, options.passClock),
       method_(createMethod(options.method)),
       cull_(options.cull),
+      animation_(options.animation),
       shadows_(options.shadows),
       frames_(options.framesInFlight) {
     camera = render::frameCrowd(shape_.center, shape_.radius, shape_.characterHeight, aspectOf(options.size));
@@ -70,32 +72,53 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     frame.stats.intervalMs = lastFrameStart_ < 0.0 ? 0.0 : start - lastFrameStart_;
     lastFrameStart_ = start;
 
-    // 1. Animation: every character's clip sampled at its own time, bones written for the GPU.
+    // 1. Motion: new segments for the characters whose plan ran out (events, not every character).
+    const double planStart = nowMs();
+    crowd_.advanceTo(time);
+    // 2. The CPU path samples every character's clips here; the GPU path moves them in its passes.
     const double animateStart = nowMs();
-    const bool animate = method_->needsAnimation();
-    if (animate) crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneOffsets());
+    const std::optional<render::AnimationPath> path = animationThisFrame();
+    if (path == render::AnimationPath::Cpu)
+        crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneOffsets(), buffers_.mutableRecords());
+    else if (cull_.mode == render::CullMode::Cpu)
+        buffers_.updateRecords(crowd_, time);  // the CPU reference culls from CPU-side records
     const double recordStart = nowMs();
-    frame.stats.animateMs = recordStart - animateStart;
+    frame.stats.planMs = animateStart - planStart;
+    frame.stats.animateMs = path == render::AnimationPath::Cpu ? recordStart - animateStart : 0.0;
 
-    // 2-6. Upload, cull, skin, draw, timestamps: recorded into one command buffer and submitted.
+    // 3-8. Upload or motion, cull, palettes, skin, draw, timestamps: one command buffer, one submit.
     VK_CHECK(vkResetCommandBuffer(frame.cmd, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
-    recordFrame(frame.cmd, slot, animate, hooks);
+    recordFrame(frame.cmd, slot, time, path.value_or(render::AnimationPath::Cpu), hooks);
     VK_CHECK(vkEndCommandBuffer(frame.cmd));
     submit(frame, hooks);
     frame.stats.recordMs = nowMs() - recordStart;
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks) {
+std::optional<render::AnimationPath> CrowdRenderer::animationThisFrame() const {
+    if (!method_->needsAnimation()) return std::nullopt;
+    return method_->fixedLayout() ? render::AnimationPath::Cpu : animation_;
+}
+
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, render::AnimationPath path,
+                                const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
-    if (uploadBones) {
-        buffers_.recordBoneUpload(cmd, slot);
+    const bool animates = method_->needsAnimation();
+    if (animates && path == render::AnimationPath::Cpu) {
+        buffers_.recordCpuAnimationUpload(cmd, slot);
         timer_.mark(cmd, "upload");
+    } else if (animates) {
+        animationPass_.recordMotion(cmd, slot, time);
+        timer_.mark(cmd, "motion");
     }
     recordCulling(cmd, slot);
     timer_.mark(cmd, "cull");
+    if (animates && path == render::AnimationPath::Gpu) {
+        animationPass_.recordPalettes(cmd);
+        timer_.mark(cmd, "palette");
+    }
     method_->recordSkinning(cmd, timer_);
     const glm::mat4 light = lightViewProjection();  // the shadow pass draws with it, the scene samples with it
     recordShadows(cmd, slot, light);
@@ -220,6 +243,8 @@ render::Rgba8Image CrowdRenderer::readback() {
 std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
     std::vector<skin::MemoryItem> items = {{"geometry pool (vertices, LOD indices, textures)", pool_.bytes()},
                                            {"character records and bone matrices", buffers_.deviceBytes()},
+                                           {"clip library (GPU animation)", animationPass_.libraryBytes()},
+                                           {"motion segments (GPU animation)", animationPass_.segmentBytes()},
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"render target", target_->bytes()},
                                            {"shadow map", shadowMap_.bytes()}};

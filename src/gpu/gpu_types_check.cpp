@@ -35,6 +35,6 @@ static_assert(sizeof(AnimationModel) == 64 && offsetof(AnimationModel, root) == 
 static_assert(sizeof(AnimationJoint) == 96 && offsetof(AnimationJoint, inverseBind) == 48);
 static_assert(sizeof(AnimationClip) == 32 && sizeof(AnimationTrack) == 16);
 static_assert(sizeof(MotionRecord) == 64 && offsetof(MotionRecord, clips) == 48);
-static_assert(sizeof(PalettePush) == 16);
+static_assert(sizeof(PalettePush) == 16 && sizeof(MotionPush) == 32);
 
 }  // namespace gpu
