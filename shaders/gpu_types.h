@@ -111,7 +111,7 @@ struct DrawTotals {
 // ---- Animation on the GPU (anim/clip_library.h flattens the clips; render/animation_pass runs them) ----
 
 // Samples of a clip's root-motion curve per cycle (plus one: the curve's end, the stride).
-#define ROOT_MOTION_SAMPLES 32
+#define ROOT_MOTION_SAMPLES 64
 // Joints a model may have for the GPU palette pass (its shared memory holds one character's at most).
 #define MAX_ANIMATION_JOINTS 256
 // Steps of the quadrature that integrates a character's path while it turns or crossfades.

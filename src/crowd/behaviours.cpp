@@ -97,9 +97,11 @@ gpu::MotionRecord march(Agent& agent, const gpu::MotionRecord& current, const Pl
         }
         case Stage::TurnAbout:
         case Stage::TurnHome: {
+            // Both about-turns go the same way round: the second semicircle undoes the first's sideways
+            // step, so the formation comes home to where it started.
             gpu::MotionRecord turn = transition(current, agent.due, walk, 1.0f, 0.0f, context);
-            turnTowards(turn, current.origin.w + kPi * (agent.stage == Stage::TurnAbout ? 1.0f : -1.0f) * 0.999f,
-                        kPi / kAboutTurnSeconds);
+            turn.timing.z = kPi / kAboutTurnSeconds;
+            turn.timing.w = kAboutTurnSeconds;
             const bool halts = agent.stage == Stage::TurnHome && context.gaits.stand != Gaits::kNone;
             agent.stage = agent.stage == Stage::TurnAbout ? Stage::MarchBack : (halts ? Stage::Halt : Stage::MarchOut);
             agent.due += kAboutTurnSeconds;

@@ -274,7 +274,10 @@ void Crowd::animate(float time, std::span<gpu::BoneRows> out, std::span<const st
 glm::vec3 Crowd::center() const {
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (const Character& c : characters_) lo = glm::min(lo, c.position), hi = glm::max(hi, c.position);
-    return characters_.empty() ? glm::vec3(0.0f) : 0.5f * (lo + hi);
+    if (characters_.empty()) return glm::vec3(0.0f);
+    // A formation marches out along +z and back: the middle of its beat.
+    if (behaviour_.kind == Behaviour::March) hi.z += behaviour_.marchLength;
+    return 0.5f * (lo + hi);
 }
 
 float Crowd::radius() const {
@@ -288,7 +291,7 @@ float Crowd::radius() const {
     // Characters that move stay within their behaviour's reach of where they started.
     float reach = 0.0f;
     if (behaviour_.kind == Behaviour::Mill) reach = behaviour_.millRadius + 1.0f;
-    if (behaviour_.kind == Behaviour::March) reach = behaviour_.marchLength + 4.0f;
+    if (behaviour_.kind == Behaviour::March) reach = 2.0f;  // the centre already spans its beat
     return r + 0.5f * widest + reach;
 }
 

@@ -16,6 +16,8 @@ constexpr int kSubsteps = 4;
 constexpr int kSteps = ROOT_MOTION_SAMPLES * kSubsteps;
 // Planted: within this fraction of the model's height of the lowest vertex.
 constexpr float kGroundBand = 0.02f;
+// Poses either side of a step in which a vertex must stay on the ground to count as planted.
+constexpr int kPlantedWindow = 2;
 // Clips that move less than this fraction of the model's height per cycle are in place (idle).
 constexpr float kInPlace = 0.02f;
 
@@ -42,15 +44,20 @@ float median(std::vector<float>& values) {
     return *middle;
 }
 
-// The body's move between two poses: minus the median move of the vertices planted in both (within
-// `band` of the ground, the lowest any vertex gets over the cycle).
-std::optional<glm::vec2> bodyStep(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b, float ground,
-                                  float band) {
+// The body's move from pose i to pose i + 1 (poses wrap round the cycle): minus the median move of the
+// vertices planted then, those within `band` of the ground (the lowest any vertex gets over the
+// cycle) in every pose from i - kPlantedWindow to i + 1 + kPlantedWindow: a foot resting on the
+// ground, not a swinging one skimming past it.
+std::optional<glm::vec2> bodyStep(const std::vector<std::vector<glm::vec3>>& poses, int i, float ground, float band) {
+    const int steps = static_cast<int>(poses.size()) - 1;  // the last pose repeats the first
+    auto pose = [&](int k) -> const std::vector<glm::vec3>& { return poses[static_cast<std::size_t>(((k % steps) + steps) % steps)]; };
     std::vector<float> dx, dz;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (a[i].y > ground + band || b[i].y > ground + band) continue;
-        dx.push_back(a[i].x - b[i].x);
-        dz.push_back(a[i].z - b[i].z);
+    for (std::size_t v = 0; v < poses[0].size(); ++v) {
+        bool planted = true;
+        for (int k = i - kPlantedWindow; k <= i + 1 + kPlantedWindow && planted; ++k) planted = pose(k)[v].y <= ground + band;
+        if (!planted) continue;
+        dx.push_back(pose(i)[v].x - pose(i + 1)[v].x);
+        dz.push_back(pose(i)[v].z - pose(i + 1)[v].z);
     }
     if (dx.empty()) return std::nullopt;
     return glm::vec2(median(dx), median(dz));
@@ -69,19 +76,11 @@ anim::RootMotion measureRootMotion(const SkinnedModel& model, const anim::Clip& 
         for (const glm::vec3& p : poses.back()) ground = std::min(ground, p.y);
     }
     std::vector<std::optional<glm::vec2>> steps(kSteps);
-    glm::vec2 direction(0.0f);
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        steps[i] = bodyStep(poses[i], poses[i + 1], ground, band);
-        if (steps[i]) direction += *steps[i];
-    }
-    // A step against the cycle's direction comes from a swinging foot grazing the ground, not a planted
-    // one: the body never walks backwards within a forward gait, so such steps count as unknown.
+    for (std::size_t i = 0; i < steps.size(); ++i) steps[i] = bodyStep(poses, static_cast<int>(i), ground, band);
     glm::vec2 known(0.0f);
     int knownCount = 0;
-    for (std::optional<glm::vec2>& step : steps) {
-        if (step && glm::dot(*step, direction) < 0.0f) step.reset();
+    for (const std::optional<glm::vec2>& step : steps)
         if (step) known += *step, ++knownCount;
-    }
     if (knownCount == 0) return motion;
     const glm::vec2 mean = known / static_cast<float>(knownCount);
     glm::vec2 total(0.0f);

@@ -64,7 +64,7 @@ CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd
                                                 "character records");
         bones_ = gpu::createBuffer(context, boneBytes,
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                    gpu::MemoryUse::DeviceLocal, "bone matrices");
         staging_.resize(framesInFlight);
     } catch (...) {
