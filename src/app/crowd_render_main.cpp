@@ -97,9 +97,11 @@ int run(const app::RenderOptions& options) {
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     const crowd::Crowd crowd(models.pointers(), app::buildCharacters(models, options.scene));
-    app::checkCrowdFits(context, crowd, options.method, options.size);
+    const std::uint32_t meshCapacity = options.cull.impostors ? options.meshCapacity : 0u;
+    app::checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
 
     frame::RendererOptions rendererOptions;
+    rendererOptions.meshCapacity = meshCapacity;
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     rendererOptions.cull = options.cull;
@@ -121,13 +123,15 @@ int run(const app::RenderOptions& options) {
     summary.frames = options.frames;
     summary.scene = options.scene.scene;
     summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off") +
-                      ", shadows " + (options.shadows ? "on" : "off");
+                      ", shadows " + (options.shadows ? "on" : "off") + app::impostorSummary(options);
     summary.model = app::modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = crowd.size();
     summary.device = context.description.name;
     summary.driver = context.description.driver;
     summary.memory = renderer.memory();
+    summary.memoryPerCharacter = renderer.memoryPerCharacter();
+    if (renderer.impostorAtlas()) summary.atlasBakeMs = renderer.impostorAtlas()->bakeMs();
     app::printSummary(summary);
     std::printf("  wrote %s\n", options.out.c_str());
     if (!options.json.empty()) app::writeJson(options.json, summary);

@@ -1,7 +1,10 @@
 #include "frame/crowd_renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 
+#include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -16,6 +19,12 @@ double nowMs() {
 
 float aspectOf(VkExtent2D extent) { return static_cast<float>(extent.width) / static_cast<float>(extent.height); }
 
+// The cap applies only when impostors are there from the start to take the characters beyond it.
+std::uint32_t meshCapacityOf(const RendererOptions& options, const crowd::Crowd& crowd) {
+    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
+                                                                                                    : 0u;
+}
+
 }  // namespace
 
 CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd,
@@ -24,7 +33,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       crowd_(crowd),
       pool_(context, crowd.models()),
       buffers_(context, crowd, options.framesInFlight),
-      lists_(context, pool_, buffers_, options.framesInFlight),
+      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityOf(options, crowd)),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       target_(std::make_unique<render::RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
@@ -34,6 +43,8 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       draw_(context, pool_, buffers_, lists_, scene_.setLayout()),
       timer_(context, options.framesInFlight, options.passClock),
       method_(createMethod(options.method)),
+      impostorSettings_(options.impostorSettings),
+      atlas_(options.atlas),
       cull_(options.cull),
       shadows_(options.shadows),
       frames_(options.framesInFlight) {
@@ -47,10 +58,12 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
         VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         VK_CHECK(vkCreateFence(context.device, &fenceInfo, nullptr, &frame.fence));
     }
+    if (cull_.impostors) enableImpostors();
 }
 
 CrowdRenderer::~CrowdRenderer() {
     vkDeviceWaitIdle(context_.device);
+    for (gpu::Buffer& b : poseStaging_) gpu::destroyBuffer(context_, b);
     for (Frame& frame : frames_) {
         vkDestroyFence(context_.device, frame.fence, nullptr);
         vkFreeCommandBuffers(context_.device, context_.commandPool, 1, &frame.cmd);
@@ -82,18 +95,18 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
-    recordFrame(frame.cmd, slot, animate, hooks);
+    recordFrame(frame.cmd, slot, time, animate, hooks);
     VK_CHECK(vkEndCommandBuffer(frame.cmd));
     submit(frame, hooks);
     frame.stats.recordMs = nowMs() - recordStart;
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks) {
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, bool uploadBones,
+                                const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
-    if (uploadBones) {
-        buffers_.recordBoneUpload(cmd, slot);
-        timer_.mark(cmd, "upload");
-    }
+    if (impostorDraw_) uploadAnimationState(cmd, slot, time);
+    if (uploadBones) buffers_.recordBoneUpload(cmd, slot);
+    if (uploadBones || impostorDraw_) timer_.mark(cmd, "upload");
     recordCulling(cmd, slot);
     timer_.mark(cmd, "cull");
     method_->recordSkinning(cmd, timer_);
@@ -112,6 +125,7 @@ gpu::CullUniforms CrowdRenderer::cullUniforms() const {
     // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too.
     uniforms.limits.y = shadows_ ? 1u : 0u;
     uniforms.light = glm::vec4(render::lightDirection(), 0.0f);
+    uniforms.limits.z = lists_.meshCapacity();
     return uniforms;
 }
 
@@ -153,8 +167,59 @@ void CrowdRenderer::recordScene(VkCommandBuffer cmd, std::uint32_t slot, const g
                                  glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
     scene_.recordGround(cmd, slot, push);
     draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push);
+    // Far characters (and those over the mesh-level cap): after the meshes, depth-tested against them.
+    if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push);
     target_->endRendering(cmd);
 }
+
+void CrowdRenderer::setCull(const render::CullSettings& cull) {
+    cull_ = cull;
+    if (cull_.impostors) enableImpostors();
+}
+
+void CrowdRenderer::enableImpostors() {
+    if (impostorDraw_) return;
+    finish();
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    if (!atlas_) {
+        // The bake reads the palette and textures through a scene set: slot 0's, idle now.
+        scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), pool_.palette(), pool_.texturedMaterials(), 0.0f));
+        atlas_ = std::make_shared<render::ImpostorAtlas>(context_, pool_, crowd_.models(), scene_.setLayout(),
+                                                         scene_.set(0), impostorSettings_);
+    } else if (atlas_->models().size() != pool_.modelCount()) {
+        throw gpu::Error("impostors: the atlas given was baked for other models");
+    }
+    impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout());
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+        poseStaging_.push_back(gpu::createBuffer(context_, buffers_.characters().size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                                 gpu::MemoryUse::HostUpload, "character records (upload)"));
+        std::memcpy(poseStaging_.back().mapped, buffers_.records().data(), buffers_.characters().size);
+    }
+}
+
+// ---- ISSUE 10 STAND-IN: delete when GPU animation (issue 10) merges ----------------------------
+// Records are uploaded once, so their pose.x is the phase at time 0; impostors need each frame's.
+// Until the GPU animation pass writes the records, this rewrites every character's phase
+// (timeOffset + time x speed) / clip duration and uploads the records. Impostors read only the record.
+void CrowdRenderer::uploadAnimationState(VkCommandBuffer cmd, std::uint32_t slot, float time) {
+    auto* records = static_cast<gpu::CharacterRecord*>(poseStaging_[slot].mapped);
+    for (std::uint32_t i = 0; i < crowd_.size(); ++i) {
+        const crowd::Character& c = crowd_.characters()[i];
+        const model::SkinnedModel& m = crowd_.modelOf(i);
+        const float duration = m.clips.empty() ? 0.0f : m.clips[c.clip].duration;
+        records[i].pose.x = duration > 0.0f ? (c.timeOffset + time * c.speed) / duration : 0.0f;
+    }
+    constexpr VkPipelineStageFlags2 readers = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                                              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    const VkBuffer characters = buffers_.characters().buffer;
+    gpu::bufferBarrier(cmd, characters, {readers, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    const VkBufferCopy region{0, 0, buffers_.characters().size};
+    vkCmdCopyBuffer(cmd, poseStaging_[slot].buffer, characters, 1, &region);
+    gpu::bufferBarrier(cmd, characters, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                       {readers, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+}
+// ---- end of ISSUE 10 STAND-IN ------------------------------------------------------------------
 
 void CrowdRenderer::submit(Frame& frame, const PresentHooks* hooks) {
     VkCommandBufferSubmitInfo command{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
@@ -223,8 +288,23 @@ std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"render target", target_->bytes()},
                                            {"shadow map", shadowMap_.bytes()}};
+    if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
+}
+
+std::map<std::string, double> CrowdRenderer::memoryPerCharacter() const {
+    const double n = std::max(crowd_.size(), 1u);
+    const double state = static_cast<double>(buffers_.characters().size + lists_.lodState().size +
+                                             lists_.impostorList().size + lists_.characterDraws().size);
+    double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
+    for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
+    const double fixed = static_cast<double>(pool_.bytes() + target_->bytes() + shadowMap_.bytes());
+    return {{"state", state / n},
+            {"bones", static_cast<double>(buffers_.bones().size) / n},
+            {"mesh slots", meshSlots / n},
+            {"atlas", atlas_ ? static_cast<double>(atlas_->bytes()) / n : 0.0},
+            {"fixed", fixed / n}};
 }
 
 }  // namespace frame

@@ -4,6 +4,8 @@
 // Headless: it renders into an offscreen target; a presenter adds its commands through PresentHooks.
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <string>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -18,6 +20,8 @@
 #include "render/cull_pass.h"
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
+#include "render/impostor_atlas.h"
+#include "render/impostor_draw.h"
 #include "render/render_target.h"
 #include "render/shadow_map.h"
 #include "render/scene_pass.h"
@@ -36,6 +40,13 @@ struct RendererOptions {
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
+    // With impostors on at construction (cull.impostors), the most characters drawn at a mesh level
+    // (LOD 0-2) in a frame: skinned vertices, visible lists and draws are sized for it, and culling
+    // demotes the characters beyond it to impostors. 0, or a crowd no larger: no cap.
+    std::uint32_t meshCapacity = 0;
+    render::ImpostorSettings impostorSettings;
+    // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
+    std::shared_ptr<const render::ImpostorAtlas> atlas;
 };
 
 struct FrameStats {
@@ -68,8 +79,9 @@ public:
     void resize(VkExtent2D size);
     // Switches the skinning method (waits for the GPU).
     void setMethod(skin::Method method);
-    // Culling and LOD settings of the next frames (takes effect at once).
-    void setCull(const render::CullSettings& cull) { cull_ = cull; }
+    // Culling and LOD settings of the next frames (takes effect at once; the first switch to impostors
+    // bakes the atlas, waiting for the GPU).
+    void setCull(const render::CullSettings& cull);
     const render::CullSettings& cull() const { return cull_; }
     void setShadows(bool on) { shadows_ = on; }
     bool shadows() const { return shadows_; }
@@ -86,6 +98,8 @@ public:
     const render::CrowdBuffers& buffers() const { return buffers_; }
     const render::DrawLists& drawLists() const { return lists_; }
     const render::CullPass& cullPass() const { return cullPass_; }
+    // The impostor atlas, once impostors have been on (null before).
+    std::shared_ptr<const render::ImpostorAtlas> impostorAtlas() const { return atlas_; }
     VkExtent2D extent() const { return target_->extent(); }
     // Where the crowd stands (measured once: it loops over every character).
     const render::CrowdShape& shape() const { return shape_; }
@@ -93,6 +107,11 @@ public:
     gpu::CullUniforms cullUniforms() const;
     // Device memory of the crowd's buffers, the method's resources and the render target.
     std::vector<skin::MemoryItem> memory() const;
+    // The same per character of the crowd, by kind: "state" (record, LOD state, impostor-list entry,
+    // the vs baseline's draw slot), "bones" (its bone block), "mesh slots" (visible lists, draws and
+    // the method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas
+    // shared by all), "fixed" (geometry, render target, shadow map).
+    std::map<std::string, double> memoryPerCharacter() const;
 
 private:
     struct Frame {
@@ -102,7 +121,9 @@ private:
         FrameStats stats;
     };
     void collect(Frame& frame, std::uint32_t slot);
-    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, bool uploadBones, const PresentHooks* hooks);
+    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, bool uploadBones, const PresentHooks* hooks);
+    void enableImpostors();
+    void uploadAnimationState(VkCommandBuffer cmd, std::uint32_t slot, float time);
     void recordCulling(VkCommandBuffer cmd, std::uint32_t slot);
     void recordShadows(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
     void recordScene(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
@@ -124,6 +145,10 @@ private:
     render::CharacterDraw draw_;
     gpu::GpuTimer timer_;
     std::unique_ptr<skin::SkinningMethod> method_;
+    render::ImpostorSettings impostorSettings_;
+    std::shared_ptr<const render::ImpostorAtlas> atlas_;
+    std::unique_ptr<render::ImpostorDraw> impostorDraw_;
+    std::vector<gpu::Buffer> poseStaging_;  // issue 10 stand-in: see uploadAnimationState
     render::CullSettings cull_;
     bool shadows_;
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
