@@ -137,6 +137,69 @@ struct ImpostorFrame {
     uint unused2;
 };
 
+// ---- Animation on the GPU (anim/clip_library.h flattens the clips; render/animation_pass runs them) ----
+
+// Samples of a clip's root-motion curve per cycle (plus one: the curve's end, the stride).
+#define ROOT_MOTION_SAMPLES 32
+// Joints a model may have for the GPU palette pass (its shared memory holds one character's at most).
+#define MAX_ANIMATION_JOINTS 256
+// Steps of the quadrature that integrates a character's path while it turns or crossfades.
+#define MOTION_QUADRATURE_STEPS 16
+
+// One model's skeleton and clips in the flattened library.
+struct AnimationModel {
+    uvec4 info;      // x: first joint in the joint table, y: joints, z: first clip in the clip table, w: clips
+    BoneRows root;   // what sits above the root joints (glTF nodes above the skeleton)
+};
+
+// One joint: its rest pose (kept where no clip animates it), parent and inverse bind matrix.
+struct AnimationJoint {
+    vec4 restTranslation;  // xyz, w: parent joint within the model (-1 for a root), exact as a float
+    vec4 restRotation;     // quaternion x, y, z, w
+    vec4 restScale;        // xyz, w: unused
+    BoneRows inverseBind;
+};
+
+// One clip: where its tracks and root motion are, its length and its stride.
+struct AnimationClip {
+    uvec4 info;    // x: first track (joint j's translation, rotation, scale at x + 3 j + 0, 1, 2),
+                   // y: first root-motion sample, z, w: unused
+    vec4 timing;   // x: duration (s), y: unused, zw: stride: how far the clip carries the character per
+                   // cycle, in model space (x, z)
+};
+
+// One track: a joint's translation, rotation or scale keys (no keys: the rest value).
+struct AnimationTrack {
+    uint firstKey;       // into the key times
+    uint keyCount;
+    uint interpolation;  // 0 step, 1 linear, 2 cubic spline (three values per key)
+    uint firstValue;     // into the key values
+};
+
+// What a character does from a start time on: one segment of its motion, planned by the CPU
+// (crowd/motion.h), evaluated in closed form by the CPU and the GPU at any later time.
+struct MotionRecord {
+    vec4 origin;  // xyz: position at the start, w: heading at the start (radians about +y)
+    vec4 timing;  // x: start time (s), y: crossfade duration (s; 0 = none), z: turn rate (rad/s),
+                  // w: how long the turn lasts (s)
+    vec4 phase;   // x: normalized phase at the start (cycles), y: cycles per second of the clip faded
+                  // from, z: of the clip faded to, w: 1 = root motion carries the character, 0 = in place
+    uvec4 clips;  // x: clip faded from, y: clip faded to (the model's own clip indices), z, w: unused
+};
+
+// Push constants of the palette passes. palette.comp: x: bucket, y: joints of its model, z:
+// characters per workgroup, w: unused. palette_dispatch.comp: x: buckets, y: most workgroups in a
+// dispatch's x dimension, z, w: unused.
+struct PalettePush {
+    uvec4 bucket;
+};
+
+// Push constants of the motion pass.
+struct MotionPush {
+    uvec4 counts;  // x: characters, y: most workgroups in a dispatch's x dimension, z, w: unused
+    vec4 time;     // x: seconds, yzw: unused
+};
+
 // Per-frame parameters of the cull pass (a uniform buffer: the frustum alone is 96 bytes).
 struct CullUniforms {
     vec4 planes[6];  // world-space frustum planes, normals pointing inside: a sphere is outside when

@@ -55,8 +55,15 @@ TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
         for (std::size_t i = 0; i < row.size(); ++i) field[header[i]] = row[i];
         EXPECT_EQ(field["status"], "ok") << line;
         for (const char* number : {"median_frame_ms", "p95_frame_ms", "fps", "gpu_draw_ms", "gpu_total_ms",
-                                   "cpu_animate_ms", "memory_bytes", "ratio_to_static"})
+                                   "memory_bytes", "ratio_to_static"})
             EXPECT_GT(std::stod(field[number]), 0.0) << number << " in " << line;
+        // GPU animation (the default): characters move and get palettes on the GPU, none on the CPU.
+        EXPECT_NE(field["animation"].find("gpu animation"), std::string::npos) << line;
+        EXPECT_EQ(std::stod(field["cpu_animate_ms"]), 0.0) << line;
+        if (field["method"] != "static") {
+            EXPECT_GT(std::stod(field["gpu_palette_ms"]), 0.0) << line;
+            EXPECT_GT(std::stod(field["gpu_motion_ms"]), 0.0) << line;
+        }
         EXPECT_FALSE(field["pass_clock"].empty());
         EXPECT_FALSE(field["device"].empty());
         EXPECT_FALSE(field["commit"].empty());

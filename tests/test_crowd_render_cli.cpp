@@ -41,7 +41,9 @@ TEST(CrowdRenderCli, SmallSceneWritesPngAndJsonWithValidationSilent) {
     EXPECT_EQ(j["method"], "two-pass");
     EXPECT_GT(j["fps"].get<double>(), 0.0);
     EXPECT_GT(j["median_frame_ms"].get<double>(), 0.0);
-    for (const char* pass : {"upload", "skin", "copy", "draw"}) EXPECT_TRUE(j["median_gpu_ms"].contains(pass)) << pass;
+    for (const char* pass : {"motion", "cull", "palette", "skin", "copy", "draw"})
+        EXPECT_TRUE(j["median_gpu_ms"].contains(pass)) << pass;
+    EXPECT_EQ(j["animation"], "in-place, gpu animation");
     EXPECT_FALSE(j["device"].get<std::string>().empty());
     EXPECT_FALSE(j["driver"].get<std::string>().empty());
     std::filesystem::remove(png);
@@ -213,7 +215,7 @@ TEST(CrowdRenderCli, OneFrameReportsItsOwnTime) {
     const nlohmann::json j = nlohmann::json::parse(file);
     EXPECT_GT(j["fps"].get<double>(), 0.0);
     EXPECT_GT(j["median_frame_ms"].get<double>(), 0.0);
-    EXPECT_EQ(j["frame_clock"], "one frame: CPU animate + record + GPU passes");
+    EXPECT_EQ(j["frame_clock"], "one frame: CPU plan + animate + record + GPU passes");
     std::filesystem::remove(json);
 }
 

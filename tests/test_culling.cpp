@@ -126,7 +126,7 @@ float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, 
 
 TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
-    const crowd::Crowd crowd = gridCrowd(soldier, 900);
+    crowd::Crowd crowd = gridCrowd(soldier, 900);
     frame::RendererOptions options;
     options.size = {160, 90};
     options.method = skin::Method::Compute;
@@ -176,7 +176,7 @@ TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
 
 namespace {
 
-render::Rgba8Image renderAt(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const render::CullSettings& cull,
+render::Rgba8Image renderAt(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::CullSettings& cull,
                             const render::Camera& camera, skin::Method method = skin::Method::Compute,
                             render::LodCounts* lods = nullptr) {
     frame::RendererOptions options;
@@ -195,7 +195,7 @@ render::Rgba8Image renderAt(const gpu::VulkanContext& context, const crowd::Crow
 
 TEST_F(GpuTest, CulledCrowdRendersTheSameImageAsTheUnculledOne) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
-    const crowd::Crowd crowd = gridCrowd(soldier, 256);
+    crowd::Crowd crowd = gridCrowd(soldier, 256);
     const render::Camera camera =
         render::cameraOnPath(render::CameraPath::FlyOver, app::crowdShape(crowd), 192.0f / 108.0f, 8.0f);
     render::CullSettings culled, unculled, onCpu;
@@ -247,7 +247,7 @@ TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) 
         c.position = glm::vec3(x, 0.0f, z) - glm::vec3(sphereCentre.x, 0.0f, sphereCentre.z);
         return c;
     };
-    const crowd::Crowd crowd(soldier, {placeAt(0.0f), placeAt(-1.01f * radius), placeAt(-0.99f * radius)});
+    crowd::Crowd crowd(soldier, {placeAt(0.0f), placeAt(-1.01f * radius), placeAt(-0.99f * radius)});
     frame::RendererOptions options;
     options.size = {96, 64};
     options.method = skin::Method::Compute;

@@ -188,7 +188,7 @@ std::vector<crowd::Character> mixedCharacters(const model::SkinnedModel& model, 
 }
 
 // Largest distance of a method's skinned vertices from the CPU reference, over every character.
-double gpuError(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method) {
+double gpuError(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method) {
     const model::SkinnedModel& m = crowd.model(0);
     frame::RendererOptions options;
     options.size = {64, 64};
@@ -214,7 +214,7 @@ double gpuError(const gpu::VulkanContext& context, const crowd::Crowd& crowd, sk
     return largest;
 }
 
-render::Rgba8Image renderImage(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
+render::Rgba8Image renderImage(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
                                float time = 0.5f) {
     frame::RendererOptions options;
     options.size = {64, 64};
@@ -226,7 +226,7 @@ render::Rgba8Image renderImage(const gpu::VulkanContext& context, const crowd::C
 
 void expectGpuMatchesCpu(const gpu::VulkanContext& context, const Asset& asset) {
     const model::SkinnedModel m = model::loadGltf(assetPath(asset));
-    const crowd::Crowd crowd(m, mixedCharacters(m, 4));
+    crowd::Crowd crowd(m, mixedCharacters(m, 4));
     // float32 on both sides of the same float matrices; allow 1e-5 of the crowd's extent (coordinates
     // reach a few character sizes from the origin).
     const double tolerance = 1e-5 * 4.0 * extent(m);

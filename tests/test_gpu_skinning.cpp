@@ -45,7 +45,7 @@ struct SkinError {
 };
 
 SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                         const crowd::Crowd& crowd, std::uint32_t maxTargetDimension, skin::Method method,
+                         crowd::Crowd crowd, std::uint32_t maxTargetDimension, skin::Method method,
                          const render::CullSettings& cull = fullDetail()) {
     frame::RendererOptions options;
     options.size = {64, 64};
@@ -82,7 +82,7 @@ SkinError compareWithCpu(const gpu::VulkanContext& context, const model::Skinned
 
 void expectPassOneMatchesCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
                              std::uint32_t maxTargetDimension, skin::Method method = skin::Method::TwoPass) {
-    const crowd::Crowd crowd(model, mixedCharacters(model, 6));
+    crowd::Crowd crowd(model, mixedCharacters(model, 6));
     const SkinError error = compareWithCpu(context, model, crowd, maxTargetDimension, method);
     // float32 skinning of coordinates up to ~10 m: a few ulps of 10 m is ~1e-6 m; allow 1e-5 of the height.
     EXPECT_LE(error.position, 1e-5 * model.height()) << model.name << " " << skin::methodName(method);
@@ -130,7 +130,7 @@ TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
     lod2.lodThresholds[0] = 1e6f, lod2.lodThresholds[1] = 1e5f;
     for (const char* name : {"soldier", "horse"}) {
         const model::SkinnedModel model = app::loadModel(name, 1);
-        const crowd::Crowd crowd(model, mixedCharacters(model, 6));
+        crowd::Crowd crowd(model, mixedCharacters(model, 6));
         for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
             for (const render::CullSettings& cull : {lod1, lod2}) {
                 const SkinError error = compareWithCpu(*context, model, crowd, 0, method, cull);
@@ -143,7 +143,7 @@ TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
 
 TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
     const model::SkinnedModel soldier = model::makeSoldier(1);
-    const crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
+    crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
     frame::RendererOptions options;
     options.size = {32, 32};
     options.maxTargetDimension = 64;
@@ -163,7 +163,7 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
     characters[0] = {walk, 0.2f, 1.0f, glm::vec3(0, 0, 0), 0.0f};
     characters[1] = {walk, 0.2f, 1.0f, glm::vec3(4, 0, 0), 0.0f};  // same phase, elsewhere
     characters[2] = {walk, 0.6f, 1.0f, glm::vec3(8, 0, 0), 0.0f};  // other phase
-    const crowd::Crowd crowd(soldier, characters);
+    crowd::Crowd crowd(soldier, characters);
     frame::RendererOptions options;
     options.size = {32, 32};
     options.cull = fullDetail();
@@ -188,7 +188,7 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
 
 namespace {
 
-render::Rgba8Image renderScene(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
+render::Rgba8Image renderScene(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
                                std::uint32_t frames) {
     frame::RendererOptions options;
     options.size = {192, 128};
@@ -204,7 +204,7 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
     scene.model = modelName;
     scene.count = 16;
     scene.clip = "random";
-    const crowd::Crowd crowd(model, app::buildCharacters(model, scene));
+    crowd::Crowd crowd(model, app::buildCharacters(model, scene));
     // One frame: "static" skins only its first frame, so every method shows the same poses there.
     const render::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 1);
     for (skin::Method method : skin::allMethods()) {

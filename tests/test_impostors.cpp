@@ -142,8 +142,8 @@ bool differs(const render::Rgba8Image& a, const render::Rgba8Image& b, std::size
 // and a 31-pixel soldier is mostly edge, hence the tolerance; a wrong cell, view, frame or normal fails.
 TEST_F(GpuTest, ImpostorMatchesTheMeshAtTheSwitchSize) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
-    const crowd::Crowd lit(soldier, row(soldier, 1.0f));
-    const crowd::Crowd dim(soldier, row(soldier, 0.6f));
+    crowd::Crowd lit(soldier, row(soldier, 1.0f));
+    crowd::Crowd dim(soldier, row(soldier, 0.6f));
     frame::RendererOptions options;
     options.size = {320, 120};
     options.method = skin::Method::Compute;
@@ -212,7 +212,7 @@ TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
     one[0].clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
     one[0].timeOffset = 0.0f;
     one[0].position = glm::vec3(0.0f);
-    const crowd::Crowd crowd(soldier, one);
+    crowd::Crowd crowd(soldier, one);
     frame::RendererOptions options;
     options.size = {96, 96};
     options.method = skin::Method::Compute;
@@ -240,7 +240,7 @@ TEST_F(GpuTest, MixedLevelsMatchTheAllMeshImageInTheNearField) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
     app::SceneOptions scene;
     scene.count = 400;
-    const crowd::Crowd crowd(soldier, app::buildCharacters(soldier, scene));
+    crowd::Crowd crowd(soldier, app::buildCharacters(soldier, scene));
     frame::RendererOptions options;
     options.size = {320, 180};
     options.method = skin::Method::Compute;

@@ -8,6 +8,7 @@ namespace {
 frame::FrameStats stats(double intervalMs, double animateMs = 1.0) {
     frame::FrameStats result;
     result.intervalMs = intervalMs;
+    result.planMs = 0.25;
     result.animateMs = animateMs;
     result.recordMs = 0.5;
     result.gpu = {{"skin", 2.0}, {"draw", 4.0}};
@@ -24,11 +25,11 @@ TEST(Report, FrameTimeIsTheMedianIntervalBetweenFrameStarts) {
 }
 
 TEST(Report, ASingleFrameReportsItsOwnTimeNotZeroFps) {
-    // No previous frame, so no interval: the frame's CPU (1 + 0.5 ms) and GPU (2 + 4 ms) time instead.
+    // No previous frame, so no interval: the frame's CPU (0.25 + 1 + 0.5 ms) and GPU (2 + 4 ms) time instead.
     const app::RunSummary s = app::summarize({stats(0.0)}, 0);
-    EXPECT_DOUBLE_EQ(s.medianFrameMs, 7.5);
-    EXPECT_DOUBLE_EQ(s.fps, 1000.0 / 7.5);
-    EXPECT_EQ(s.frameClock, "one frame: CPU animate + record + GPU passes");
+    EXPECT_DOUBLE_EQ(s.medianFrameMs, 7.75);
+    EXPECT_DOUBLE_EQ(s.fps, 1000.0 / 7.75);
+    EXPECT_EQ(s.frameClock, "one frame: CPU plan + animate + record + GPU passes");
 }
 
 TEST(Report, RecentFramesKeepsTheLastOnesInOrderAfterTheSkippedOnes) {

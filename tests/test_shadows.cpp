@@ -35,7 +35,7 @@ struct Shot {
 Shot renderSoldier(const gpu::VulkanContext& context, const model::SkinnedModel& soldier, float time, bool shadows) {
     crowd::Character c;
     c.clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
-    const crowd::Crowd crowd(soldier, {c});
+    crowd::Crowd crowd(soldier, {c});
     frame::RendererOptions options;
     options.size = {160, 120};
     options.method = skin::Method::Compute;

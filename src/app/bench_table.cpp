@@ -11,7 +11,7 @@
 namespace app {
 namespace {
 
-const char* const kPasses[] = {"upload", "cull", "skin", "copy", "shadow", "draw"};
+const char* const kPasses[] = {"upload", "motion", "cull", "palette", "skin", "copy", "shadow", "draw"};
 
 double passMs(const BenchResult& r, const char* pass) {
     const auto it = r.passes.medianGpuMs.find(pass);
@@ -67,8 +67,8 @@ void printTable1(const std::vector<BenchResult>& results, const std::vector<std:
 
 void printPassTable(const std::vector<BenchResult>& results) {
     std::printf("\nPer pass (GPU ms, median) and cost of skinning relative to the static ceiling\n");
-    std::printf("%-14s %-16s %8s %9s %9s %7s %8s %8s %8s %8s %8s %8s %9s %9s %10s %22s %8s  %s\n", "model", "method",
-                "chars", "frame ms", "p95 ms", "/static", "upload", "cull", "skin", "copy", "shadow", "draw", "Gvert/s",
+    std::printf("%-14s %-16s %8s %9s %9s %7s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %10s %22s %8s  %s\n", "model", "method",
+                "chars", "frame ms", "p95 ms", "/static", "upload", "motion", "cull", "palette", "skin", "copy", "shadow", "draw", "Gvert/s",
                 "cpu anim", "memory", "LOD 0/1/2/impostor", "M tris", "pass clock");
     for (const BenchResult& r : results) {
         if (!r.ok) {
@@ -79,9 +79,10 @@ void printPassTable(const std::vector<BenchResult>& results) {
                                  std::to_string(static_cast<long>(r.frame.medianVisible[1])) + "/" +
                                  std::to_string(static_cast<long>(r.frame.medianVisible[2])) + "/" +
                                  std::to_string(static_cast<long>(r.frame.medianImpostors));
-        std::printf("%-14s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s %22s %8.2f  %s\n",
+                std::printf("%-14s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s %22s %8.2f  %s\n",
                     r.model.c_str(), r.method.c_str(), r.count, r.frame.medianFrameMs, r.frame.p95FrameMs,
-                    ratioToStatic(results, r), passMs(r, "upload"), passMs(r, "cull"), passMs(r, "skin"),
+                    ratioToStatic(results, r), passMs(r, "upload"), passMs(r, "motion"), passMs(r, "cull"),
+                    passMs(r, "palette"), passMs(r, "skin"),
                     passMs(r, "copy"), passMs(r, "shadow"), passMs(r, "draw"), skinVerticesPerSecond(r) * 1e-9, r.frame.medianAnimateMs,
                     gpu::formatBytes(memoryBytes(r)).c_str(), lods.c_str(), r.frame.medianTriangles / 1e6,
                     r.passes.passClock.c_str());
@@ -91,9 +92,10 @@ void printPassTable(const std::vector<BenchResult>& results) {
 void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
     std::ostringstream file;
     file << "model,method,characters,vertices,triangles,status,median_frame_ms,p95_frame_ms,fps,ratio_to_static,"
-            "gpu_upload_ms,gpu_cull_ms,gpu_skin_ms,gpu_copy_ms,gpu_shadow_ms,gpu_draw_ms,gpu_total_ms,pass_clock,skin_vertices_per_s,"
+            "gpu_upload_ms,gpu_motion_ms,gpu_cull_ms,gpu_palette_ms,gpu_skin_ms,gpu_copy_ms,gpu_shadow_ms,gpu_draw_ms,"
+            "gpu_total_ms,pass_clock,skin_vertices_per_s,"
             "cpu_animate_ms,cpu_record_ms,memory_bytes,frames,warmup,width,height,device,driver,commit,date,"
-            "scene,culling,visible_lod0,visible_lod1,visible_lod2,triangles_drawn\n";
+            "scene,culling,visible_lod0,visible_lod1,visible_lod2,triangles_drawn,animation\n";
     for (const BenchResult& r : results) {
         file << r.model << ',' << r.method << ',' << r.count << ',' << r.vertices << ',' << r.triangles << ','
              << (r.ok ? "ok" : "skipped") << ',' << r.frame.medianFrameMs << ',' << r.frame.p95FrameMs << ','
@@ -104,7 +106,7 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
              << meta.frames << ',' << meta.warmup << ',' << meta.width << ',' << meta.height << ",\"" << meta.device
              << "\",\"" << meta.driver << "\"," << meta.commit << ',' << meta.date << ',' << r.frame.scene << ",\""
              << r.frame.culling << "\"," << r.frame.medianVisible[0] << ',' << r.frame.medianVisible[1] << ','
-             << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << '\n';
+             << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << ",\"" << r.frame.animation << "\"\n";
     }
     io::writeFile(path, file.str());
 }
@@ -143,6 +145,7 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["cpu_record_ms"] = r.frame.medianRecordMs;
         row["scene"] = r.frame.scene;
         row["culling"] = r.frame.culling;
+        row["animation"] = r.frame.animation;
         row["median_visible_per_lod"] = {r.frame.medianVisible[0], r.frame.medianVisible[1], r.frame.medianVisible[2]};
         row["median_triangles"] = r.frame.medianTriangles;
         row["median_impostors"] = r.frame.medianImpostors;

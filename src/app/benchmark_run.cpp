@@ -14,7 +14,7 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     SceneOptions scene = options.scene.scene;
     scene.count = options.count;
     scene.seed = options.seed;
-    const crowd::Crowd crowd(models.pointers(), buildCharacters(models, scene));
+    crowd::Crowd crowd = buildCrowd(models, scene);
     const std::uint32_t meshCapacity = options.scene.cull.impostors ? options.scene.meshCapacity : 0u;
     checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
     frame::RendererOptions rendererOptions;
@@ -24,6 +24,7 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     rendererOptions.method = options.method;
     rendererOptions.cull = options.scene.cull;
     rendererOptions.shadows = options.scene.shadows;
+    rendererOptions.animation = options.scene.animation;
     rendererOptions.passClock = options.passClock;
     frame::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = crowdShape(crowd);
@@ -41,6 +42,8 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     summary.culling = std::string(render::cullModeName(options.scene.cull.mode)) + ", LOD " +
                       (options.scene.cull.lod ? "on" : "off") + ", shadows " + (options.scene.shadows ? "on" : "off") +
                       impostorSummary(options.scene);
+    summary.animation = std::string(crowd::behaviourName(scene.behaviour)) + ", " +
+                        render::animationPathName(options.scene.animation) + " animation";
     summary.model = modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = options.count;

@@ -143,7 +143,18 @@ std::vector<crowd::Character> buildCharacters(const CrowdModels& models, const S
         const float height = m->height();
         layout.scales.push_back(several && height > 0.0f && (height < 0.1f || height > 10.0f) ? 1.8f / height : 1.0f);
     }
+    const bool living = scene.behaviour != crowd::Behaviour::InPlace;
+    layout.formation = scene.behaviour == crowd::Behaviour::March;
+    layout.scaleVariation = living ? 0.08f : 0.0f;
+    layout.tintVariation = living ? 0.12f : 0.0f;
     return crowd::gridLayout(models.pointers(), layout);
+}
+
+crowd::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene) {
+    crowd::BehaviourSettings behaviour;
+    behaviour.kind = scene.behaviour;
+    behaviour.seed = scene.seed;
+    return crowd::Crowd(models.pointers(), buildCharacters(models, scene), behaviour);
 }
 
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const SceneOptions& scene) {

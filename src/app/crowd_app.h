@@ -55,6 +55,9 @@ CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<
 // 1.8 units so that they stand together.
 std::vector<crowd::Character> buildCharacters(const CrowdModels& models, const SceneOptions& scene);
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const SceneOptions& scene);
+// The crowd of the scene options: those characters doing the scene's behaviour (seeded by its seed).
+// Living crowds (march, mill) also vary each character's scale by up to 8 % and its colour a little.
+crowd::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene);
 
 // Device memory the crowd needs with this method and image size (the sizes the allocations will have).
 // `meshCapacity` > 0: impostors are on and at most that many characters are drawn at a mesh level

@@ -96,7 +96,7 @@ int run(const app::RenderOptions& options) {
         app::loadModels(options.scene.model, options.scene.seed, &notes, options.scene.assetRoot);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     gpu::VulkanContext context({options.validation, options.device, {}, false});
-    const crowd::Crowd crowd(models.pointers(), app::buildCharacters(models, options.scene));
+    crowd::Crowd crowd = app::buildCrowd(models, options.scene);
     const std::uint32_t meshCapacity = options.cull.impostors ? options.meshCapacity : 0u;
     app::checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
 
@@ -106,6 +106,7 @@ int run(const app::RenderOptions& options) {
     rendererOptions.method = options.method;
     rendererOptions.cull = options.cull;
     rendererOptions.shadows = options.shadows;
+    rendererOptions.animation = options.animation;
     frame::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = app::crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
@@ -124,6 +125,8 @@ int run(const app::RenderOptions& options) {
     summary.scene = options.scene.scene;
     summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off") +
                       ", shadows " + (options.shadows ? "on" : "off") + app::impostorSummary(options);
+    summary.animation = std::string(crowd::behaviourName(options.scene.behaviour)) + ", " +
+                        render::animationPathName(options.animation) + " animation";
     summary.model = app::modelNames(models);
     summary.method = skin::methodName(options.method);
     summary.characters = crowd.size();

@@ -24,8 +24,9 @@ const char* renderUsage() {
     return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
 
 usage: crowd-render [options]
-  --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed or stress: a crowd, its
-                          culling and LOD, and a camera path (flags beside it override)
+  --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march or mill: a
+                          crowd, what it does, its culling and LOD, and a camera path (flags beside
+                          it override)
   --model LIST            soldier, horse or a skinned glTF 2.0 file (.gltf/.glb); several as
                           NAME[:WEIGHT],... e.g. soldier:3,horse:1 (default soldier)
   --asset-root DIR        let a glTF file's buffers and images come from anywhere inside DIR (default:
@@ -48,6 +49,11 @@ usage: crowd-render [options]
   --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
                           fraction of it, 0..0.5 (default 0.1)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
+  --behaviour NAME        in-place (every character loops its clip where it stands, as in the paper),
+                          march (a formation in step: out, about turn, back, halt) or mill (each
+                          wanders between targets near home, walking, running and stopping)
+  --animation cpu|gpu     bone matrices from CPU jobs uploaded each frame (the reference), or from
+                          compute passes for the characters culling keeps (default gpu)
   --method NAME           skinning method: two-pass (default, the paper's), vs (the paper's baseline),
                           vs-instanced, two-pass-direct, compute, static (no skinning: the ceiling)
   --frames N              frames to render (default 30)
@@ -130,6 +136,7 @@ void applyPreset(const ScenePreset& preset, RenderOptions& options) {
     options.cull.lod = preset.lod;
     options.cull.mode = preset.cull;
     options.camera = preset.camera;
+    options.scene.behaviour = preset.behaviour;
 }
 
 // --scene first, wherever it stands, so that every other flag overrides the preset.
@@ -189,6 +196,15 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
                 throw gpu::Error("--cull: '" + mode + "' is not gpu, cpu or off");
         }
         else if (flag == "--asset-root") options.scene.assetRoot = next();
+        else if (flag == "--behaviour") {
+            const std::string name = next();
+            if (!crowd::parseBehaviour(name, options.scene.behaviour))
+                throw gpu::Error("--behaviour: '" + name + "' is not in-place, march or mill");
+        } else if (flag == "--animation") {
+            const std::string name = next();
+            if (!render::parseAnimationPath(name, options.animation))
+                throw gpu::Error("--animation: '" + name + "' is not cpu or gpu");
+        }
         else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--clip") options.scene.clip = next();
         else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);

@@ -8,6 +8,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "crowd/behaviours.h"
+#include "render/animation_pass.h"
 #include "render/camera_path.h"
 #include "render/cull_pass.h"
 #include "skin/skinning_method.h"
@@ -28,15 +30,17 @@ struct SceneOptions {
     std::string clip;               // name or index; "" = the model's default clip, "random" = one per character
     std::uint32_t seed = 1;
     std::string assetRoot;          // folder a glTF model's external files must lie in; "" = the model's own
+    crowd::Behaviour behaviour = crowd::Behaviour::InPlace;  // what the characters do (crowd/behaviours.h)
 };
 
 struct RenderOptions {
     SceneOptions scene;
     render::CullSettings cull;
     render::CameraPath camera = render::CameraPath::Framed;
-    float startSeconds = 0.0f;
-    bool shadows = true;  // the directional light's shadow map  // scene time of the first frame (where on the camera path a run begins)
+    float startSeconds = 0.0f;  // scene time of the first frame (where on the camera path a run begins)
+    bool shadows = true;        // the directional light's shadow map
     skin::Method method = skin::Method::TwoPass;
+    render::AnimationPath animation = render::AnimationPath::Gpu;  // where bone matrices are computed
     // With impostors on (cull.impostors): the most characters at a mesh level (LOD 0-2) in a frame.
     std::uint32_t meshCapacity = kDefaultMeshCapacity;
     std::uint32_t frames = 30;

@@ -26,12 +26,13 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
     summary.frames = static_cast<std::uint32_t>(stats.size());
     // Never leave every frame out: a short run still reports its last frames.
     const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
-    std::vector<double> intervals, animate, record, total, triangles, skinned, impostors, demoted;
+    std::vector<double> intervals, plan, animate, record, total, triangles, skinned, impostors, demoted;
     std::vector<double> visible[LOD_COUNT];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
         const frame::FrameStats& frame = stats[i];
         if (frame.intervalMs > 0.0) intervals.push_back(frame.intervalMs);
+        plan.push_back(frame.planMs);
         animate.push_back(frame.animateMs);
         record.push_back(frame.recordMs);
         double sum = 0.0;
@@ -51,12 +52,13 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
     summary.measuredFrames = static_cast<std::uint32_t>(stats.size() - first);
     if (intervals.empty() && !total.empty()) {
         // One frame: no interval between frame starts to measure. Its own time is what it cost.
-        summary.frameClock = "one frame: CPU animate + record + GPU passes";
-        intervals.push_back(animate.back() + record.back() + total.back());
+        summary.frameClock = "one frame: CPU plan + animate + record + GPU passes";
+        intervals.push_back(plan.back() + animate.back() + record.back() + total.back());
     }
     summary.medianFrameMs = median(intervals);
     summary.p95FrameMs = percentile(intervals, 0.95);
     summary.fps = summary.medianFrameMs > 0.0 ? 1000.0 / summary.medianFrameMs : 0.0;
+    summary.medianPlanMs = median(plan);
     summary.medianAnimateMs = median(animate);
     summary.medianRecordMs = median(record);
     for (auto& [pass, values] : passes) summary.medianGpuMs[pass] = median(values);
@@ -106,7 +108,8 @@ void printSummary(const RunSummary& s) {
     }
     std::printf("  frame: median %.3f ms (%.1f fps), p95 %.3f ms  [%s]\n", s.medianFrameMs, s.fps, s.p95FrameMs,
                 s.frameClock.c_str());
-    std::printf("  cpu:   animate %.3f ms, record+submit %.3f ms\n", s.medianAnimateMs, s.medianRecordMs);
+    std::printf("  cpu:   plan %.3f ms, animate %.3f ms, record+submit %.3f ms  [%s]\n", s.medianPlanMs, s.medianAnimateMs,
+                s.medianRecordMs, s.animation.c_str());
     std::printf("  gpu:  ");
     for (const auto& [pass, ms] : s.medianGpuMs) std::printf(" %s %.3f ms,", pass.c_str(), ms);
     std::printf(" total %.3f ms  [%s]\n", s.medianGpuTotalMs, s.passClock.c_str());
@@ -117,6 +120,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["scene"] = s.scene;
     json["model"] = s.model;
     json["culling"] = s.culling;
+    json["animation"] = s.animation;
     json["median_visible_per_lod"] = {s.medianVisible[0], s.medianVisible[1], s.medianVisible[2]};
     json["median_triangles"] = s.medianTriangles;
     json["median_impostors"] = s.medianImpostors;
@@ -131,6 +135,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["median_frame_ms"] = s.medianFrameMs;
     json["p95_frame_ms"] = s.p95FrameMs;
     json["frame_clock"] = s.frameClock;
+    json["median_cpu_plan_ms"] = s.medianPlanMs;
     json["median_cpu_animate_ms"] = s.medianAnimateMs;
     json["median_cpu_record_ms"] = s.medianRecordMs;
     json["median_gpu_ms"] = s.medianGpuMs;

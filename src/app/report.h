@@ -17,6 +17,7 @@ struct RunSummary {
     std::string model;
     std::string method;
     std::string culling;  // "gpu", "cpu", "off", with "LOD on/off"
+    std::string animation = "in-place, gpu animation";  // behaviour and animation path
     std::uint32_t characters = 0;
     // Medians over the measured frames: visible characters per level of detail, triangles drawn.
     double medianVisible[LOD_COUNT] = {};
@@ -32,6 +33,7 @@ struct RunSummary {
     // measured frame (no interval to measure), that frame's CPU time plus its GPU passes.
     std::string frameClock = "wall clock between frame starts";
     double fps = 0.0;             // 1000 / medianFrameMs
+    double medianPlanMs = 0.0;    // CPU: motion planning (segments whose plan ran out)
     double medianAnimateMs = 0.0; // CPU
     double medianRecordMs = 0.0;  // CPU
     std::map<std::string, double> medianGpuMs;  // per pass, from `passClock`

@@ -20,6 +20,10 @@ std::vector<ScenePreset> scenePresets() {
          CullMode::Gpu, CameraPath::FlyOver},
         {"stress", "100,000 soldiers (--count N for more), from high above down into the crowd", "soldier", 100000,
          true, CullMode::Gpu, CameraPath::Descend},
+        {"march", "1,024 soldiers in formation marching in step, turning about and halting, orbiting camera",
+         "soldier", 1024, true, CullMode::Gpu, CameraPath::Orbit, crowd::Behaviour::March},
+        {"mill", "4,096 soldiers and horses (3:1) milling: walking, running, stopping, flying over",
+         "soldier:3,horse:1", 4096, true, CullMode::Gpu, CameraPath::FlyOver, crowd::Behaviour::Mill},
     };
 }
 

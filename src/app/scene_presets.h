@@ -1,11 +1,13 @@
 #pragma once
 // The scenes every program knows by name (--scene): the paper's Fig. 3, 4 and 5, a mixed crowd, and
-// a stress test; each sets the crowd, culling, LOD and a camera path. Flags given beside --scene
+// a stress test, and two living crowds (march, mill); each sets the crowd, what it does, culling, LOD
+// and a camera path. Flags given beside --scene
 // override its settings.
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "crowd/behaviours.h"
 #include "render/camera_path.h"
 #include "render/cull_pass.h"
 
@@ -19,6 +21,7 @@ struct ScenePreset {
     bool lod;
     render::CullMode cull;
     render::CameraPath camera;
+    crowd::Behaviour behaviour = crowd::Behaviour::InPlace;
 };
 
 std::vector<ScenePreset> scenePresets();

@@ -8,10 +8,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "anim/local_to_model.h"
-#include "anim/sample_clip.h"
-#include "anim/skinning_matrices.h"
+#include "anim/blending_job.h"
+#include "anim/palette_job.h"
+#include "anim/sampling_job.h"
 #include "crowd/worker_pool.h"
+#include "model/measure_root_motion.h"
 #include "gpu/vulkan_error.h"
 
 namespace crowd {
@@ -79,6 +80,15 @@ std::vector<Character> gridLayout(std::span<const model::SkinnedModel* const> mo
         c.heading = (unit(random) - 0.5f) * 0.5f;
         c.scale = c.model < options.scales.size() ? options.scales[c.model] : 1.0f;
         c.tint = glm::vec3(brightnessVariation(i));
+        if (options.scaleVariation > 0.0f) c.scale *= 1.0f + options.scaleVariation * (2.0f * unit(random) - 1.0f);
+        if (options.tintVariation > 0.0f)
+            for (int k = 0; k < 3; ++k) c.tint[k] *= 1.0f + options.tintVariation * (2.0f * unit(random) - 1.0f);
+        if (options.formation) {
+            c.position = glm::vec3(x, 0.0f, z);
+            c.heading = 0.0f;
+            c.timeOffset = 0.0f;
+            c.speed = 1.0f;
+        }
     }
     return characters;
 }
@@ -89,49 +99,175 @@ glm::mat4 characterTransform(const Character& character) {
     return glm::scale(turn, glm::vec3(character.scale));
 }
 
-Crowd::Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Character> characters)
-    : models_(std::move(models)), characters_(std::move(characters)) {
+Crowd::Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Character> characters,
+             const BehaviourSettings& behaviour)
+    : models_(std::move(models)), behaviour_(behaviour) {
     if (models_.empty() || models_.size() > MAX_MODELS)
         throw gpu::Error("a crowd holds 1 to " + std::to_string(MAX_MODELS) + " models, not " +
                          std::to_string(models_.size()));
-    for (std::size_t i = 0; i < characters_.size(); ++i) {
-        const Character& c = characters_[i];
-        if (c.model >= models_.size())
-            throw gpu::Error("character " + std::to_string(i) + " names model " + std::to_string(c.model) +
-                             " of " + std::to_string(models_.size()));
-        const model::SkinnedModel& m = *models_[c.model];
-        if (!m.clips.empty() && c.clip >= m.clips.size())
-            throw gpu::Error("character " + std::to_string(i) + " names clip " + std::to_string(c.clip) + " of " +
-                             m.name + ", which has " + std::to_string(m.clips.size()));
+    for (const model::SkinnedModel* m : models_) {
+        std::vector<anim::RootMotion> rootMotion;
+        for (const anim::Clip& clip : m->clips) rootMotion.push_back(model::measureRootMotion(*m, clip));
+        const std::uint32_t index = library_.addModel(m->skeleton, m->clips, rootMotion);
+        gaits_.push_back(findGaits(*m, library_, index));
+    }
+    characters_.reserve(characters.size());
+    for (const Character& c : characters) addCharacter(c);
+}
+
+Crowd::Crowd(const model::SkinnedModel& model, std::vector<Character> characters, const BehaviourSettings& behaviour)
+    : Crowd(std::vector<const model::SkinnedModel*>{&model}, std::move(characters), behaviour) {}
+
+void Crowd::addCharacter(const Character& c) {
+    const auto index = static_cast<std::uint32_t>(characters_.size());
+    if (c.model >= models_.size())
+        throw gpu::Error("character " + std::to_string(index) + " names model " + std::to_string(c.model) + " of " +
+                         std::to_string(models_.size()));
+    const model::SkinnedModel& m = *models_[c.model];
+    if (!m.clips.empty() && c.clip >= m.clips.size())
+        throw gpu::Error("character " + std::to_string(index) + " names clip " + std::to_string(c.clip) + " of " +
+                         m.name + ", which has " + std::to_string(m.clips.size()));
+    characters_.push_back(c);
+    cursorOffsets_.push_back(cursors_.size());
+    cursors_.resize(cursors_.size() + 6u * m.skeleton.jointCount(), 0u);
+    // Phase and rate as the paper's crowd plays them: clip time = timeOffset + time x speed.
+    const float duration = m.clips.empty() ? 0.0f : m.clips[c.clip].duration;
+    const gpu::MotionRecord first = inPlaceSegment(library_, c.model, c.clip, c.position, c.heading, 0.0f,
+                                                   duration > 0.0f ? c.timeOffset / duration : 0.0f, c.speed);
+    agents_.emplace_back();
+    segments_.push_back(startBehaviour(agents_.back(), first, planContext(index)));
+    changed_.push_back(1u);
+    lastChanged_.push_back(index);
+    ++generation_;
+}
+
+std::uint32_t Crowd::spawn(const Character& character) {
+    lastChanged_.clear();
+    addCharacter(character);
+    plannedTo_ = std::min(plannedTo_, 0.0f);
+    return size() - 1;
+}
+
+PlanContext Crowd::planContext(std::uint32_t character) const {
+    const std::uint32_t model = characters_[character].model;
+    return {library_, model, gaits_[model], behaviour_, character};
+}
+
+void Crowd::replan(std::uint32_t character, float time) {
+    Agent& agent = agents_[character];
+    while (agent.due <= time) {
+        segments_[character] = planNext(agent, segments_[character], planContext(character));
+        changed_[character] = 1u;
     }
 }
 
-Crowd::Crowd(const model::SkinnedModel& model, std::vector<Character> characters)
-    : Crowd(std::vector<const model::SkinnedModel*>{&model}, std::move(characters)) {}
+void Crowd::advanceTo(float time) {
+    if (time < plannedTo_) {
+        // Back in time: every plan starts over from the layout.
+        std::vector<Character> characters = std::move(characters_);
+        characters_.clear();
+        segments_.clear();
+        agents_.clear();
+        cursors_.clear();
+        cursorOffsets_.clear();
+        changed_.clear();
+        for (const Character& c : characters) addCharacter(c);
+    }
+    plannedTo_ = time;
+    // Characters plan independently (their choices hash their own index), so any split of the work
+    // gives the same crowd.
+    WorkerPool::shared().parallelFor(size(), 256, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t c = begin; c < end; ++c) replan(c, time);
+    });
+    lastChanged_.clear();
+    for (std::uint32_t c = 0; c < size(); ++c)
+        if (changed_[c]) lastChanged_.push_back(c), changed_[c] = 0u;
+    ++generation_;
+}
+
+void Crowd::command(std::uint32_t character, float at) {
+    if (character >= size()) throw gpu::Error("no character " + std::to_string(character) + " in a crowd of " + std::to_string(size()));
+    Agent& agent = agents_[character];
+    const gpu::MotionRecord& current = segments_[character];
+    // A crossfade in progress finishes first: a segment blends two clips, never three.
+    agent.due = std::max(at, current.timing.x + current.timing.y);
+    agent.commanded = true;
+}
+
+void Crowd::moveTo(std::uint32_t character, glm::vec2 target, float at, std::int32_t gait, float rate) {
+    command(character, at);
+    Agent& agent = agents_[character];
+    const Gaits& gaits = gaits_[characters_[character].model];
+    agent.gait = gait >= 0 ? gait : gaits.walk;
+    if (agent.gait < 0 || static_cast<std::uint32_t>(agent.gait) >= library_.clipCount(characters_[character].model) ||
+        glm::length(library_.stride(characters_[character].model, static_cast<std::uint32_t>(agent.gait))) == 0.0f)
+        throw gpu::Error("character " + std::to_string(character) + ": " + modelOf(character).name +
+                         " has no clip that travels to use as its gait");
+    agent.target = target;
+    agent.rate = rate;
+    agent.stage = Agent::Stage::Stand;
+}
+
+void Crowd::play(std::uint32_t character, std::uint32_t clip, float at, float fade, float rate) {
+    command(character, at);
+    if (clip >= library_.clipCount(characters_[character].model))
+        throw gpu::Error("character " + std::to_string(character) + ": " + modelOf(character).name + " has no clip " +
+                         std::to_string(clip));
+    Agent& agent = agents_[character];
+    agent.gait = static_cast<std::int32_t>(clip);
+    agent.rate = rate;
+    agent.fade = fade;
+    agent.stage = Agent::Stage::Play;
+}
+
+MotionState Crowd::stateAt(std::uint32_t index, float time) const {
+    return evaluateMotion(segments_[index], time, library_, characters_[index].model);
+}
+
+void Crowd::poseRecord(std::uint32_t index, float time, gpu::CharacterRecord& record) const {
+    const MotionState state = stateAt(index, time);
+    record.placement = glm::vec4(state.position, state.heading);
+    record.ids.w = state.clipFrom | (state.clipTo << 16);
+    record.pose = glm::vec4(state.phase, state.weight, 0.0f, 0.0f);
+}
 
 void Crowd::animateCharacter(std::uint32_t index, float time, std::span<gpu::BoneRows> out) const {
     const Character& c = characters_[index];
-    const model::SkinnedModel& model = *models_[c.model];
-    const anim::Skeleton& skeleton = model.skeleton;
-    const std::size_t joints = skeleton.jointCount();
+    const std::uint32_t joints = library_.jointCount(c.model);
     // Per-thread scratch, reused by the pool's long-lived threads: once warm, animation allocates nothing.
-    thread_local std::vector<anim::Transform> locals;
-    thread_local std::vector<glm::mat4> modelSpace;
-    locals.resize(joints);
+    thread_local std::vector<anim::Transform> from, to;
+    thread_local std::vector<anim::Affine> modelSpace;
+    from.resize(joints);
+    to.resize(joints);
     modelSpace.resize(joints);
-    if (model.clips.empty()) {
-        std::copy(skeleton.restPose.begin(), skeleton.restPose.end(), locals.begin());
+    const MotionState state = stateAt(index, time);
+    std::span<std::uint16_t> cursors(cursors_.data() + cursorOffsets_[index], 6u * joints);
+    if (library_.clipCount(c.model) == 0) {
+        for (std::uint32_t j = 0; j < joints; ++j) to[j] = models_[c.model]->skeleton.restPose[j];
     } else {
-        anim::sampleClip(model.clips[c.clip], c.timeOffset + time * c.speed, skeleton.restPose, locals);
+        // Both clips at the same point of their cycles (synchronized phase).
+        const float cycle = state.phase - std::floor(state.phase);
+        auto sample = [&](std::uint32_t clip, std::span<std::uint16_t> clipCursors, std::vector<anim::Transform>& pose) {
+            anim::SamplingJob{&library_, c.model, clip, cycle * library_.duration(c.model, clip), clipCursors, pose}.run();
+        };
+        sample(state.clipTo, cursors.subspan(3u * joints), to);
+        if (state.weight < 1.0f) {
+            sample(state.clipFrom, cursors.first(3u * joints), from);
+            anim::BlendingJob{from, to, state.weight, to}.run();
+        }
     }
-    anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, modelSpace);
-    anim::skinningMatrices(modelSpace, skeleton.inverseBind, characterTransform(c), out.first(joints));
+    const anim::Affine placement = anim::placementAffine(state.position, state.heading, c.scale);
+    anim::PaletteJob{&library_, c.model, placement, to, modelSpace, out.first(joints)}.run();
 }
 
-void Crowd::animate(float time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets) const {
+void Crowd::animate(float time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
+                    std::span<gpu::CharacterRecord> records, WorkerPool* pool) const {
     // Chunks of 32 characters (tens of microseconds each) keep the handoff cost small and the cores even.
-    WorkerPool::shared().parallelFor(size(), 32, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t i = begin; i < end; ++i) animateCharacter(i, time, out.subspan(boneOffsets[i]));
+    (pool ? *pool : WorkerPool::shared()).parallelFor(size(), 32, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t i = begin; i < end; ++i) {
+            animateCharacter(i, time, out.subspan(boneOffsets[i]));
+            if (!records.empty()) poseRecord(i, time, records[i]);
+        }
     });
 }
 
@@ -149,7 +285,11 @@ float Crowd::radius() const {
         const glm::vec3 extent = m->boundsMax - m->boundsMin;
         widest = std::max(widest, std::max(extent.x, extent.z));
     }
-    return r + 0.5f * widest;
+    // Characters that move stay within their behaviour's reach of where they started.
+    float reach = 0.0f;
+    if (behaviour_.kind == Behaviour::Mill) reach = behaviour_.millRadius + 1.0f;
+    if (behaviour_.kind == Behaviour::March) reach = behaviour_.marchLength + 4.0f;
+    return r + 0.5f * widest + reach;
 }
 
 float Crowd::tallestHeight() const {

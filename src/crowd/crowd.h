@@ -1,18 +1,29 @@
 #pragma once
-// The crowd: every character's model, clip, time offset, speed and placement, and the job that turns
-// them into bone matrices each frame. A crowd may mix models (soldiers beside horses beside glTF
-// characters); a character names its model by index into the crowd's model list.
+// The crowd: every character's model, variety and motion, the API a program drives it with, and the
+// CPU path that turns it into bone matrices each frame. A crowd may mix models (soldiers beside horses
+// beside glTF characters); a character names its model by index into the crowd's model list.
+//
+// Motion is a closed-form segment per character (crowd/motion.h). Behaviours (crowd/behaviours.h) or
+// commands plan a new segment when the last one's plan runs out; advanceTo(time) does that planning,
+// and only the characters it replans change for the GPU.
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "anim/clip_library.h"
+#include "crowd/behaviours.h"
+#include "crowd/gaits.h"
+#include "crowd/motion.h"
+#include "crowd/worker_pool.h"
 #include "gpu_types.h"
 #include "model/skinned_model.h"
 
 namespace crowd {
 
+// What a character is when it enters the crowd: it plays `clip` in place from time 0 (the paper's
+// crowd) until its behaviour or a command moves it.
 struct Character {
     std::uint32_t clip = 0;
     float timeOffset = 0.0f;  // seconds added to the global time (the character's phase)
@@ -35,6 +46,12 @@ struct LayoutOptions {
     std::vector<float> weights;
     // Per model: uniform scale of its characters; empty: 1.
     std::vector<float> scales;
+    // A formation: exact grid, every character facing +z at phase 0 and speed 1 (marching in step).
+    bool formation = false;
+    // Each character's scale varies by up to this fraction either way, and each colour channel of its
+    // tint by up to this one (seeded), so no two match.
+    float scaleVariation = 0.0f;
+    float tintVariation = 0.0f;
 };
 
 // Characters on a square grid centred on the origin, facing +z, with seeded jitter of position,
@@ -55,31 +72,81 @@ class Crowd {
 public:
     // The models must outlive the crowd. Throws gpu::Error when a character names a model or clip
     // that does not exist, or when there are more than MAX_MODELS models.
-    Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Character> characters);
+    Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Character> characters,
+          const BehaviourSettings& behaviour = {});
     // A crowd of one model.
-    Crowd(const model::SkinnedModel& model, std::vector<Character> characters);
+    Crowd(const model::SkinnedModel& model, std::vector<Character> characters, const BehaviourSettings& behaviour = {});
 
     std::uint32_t size() const { return static_cast<std::uint32_t>(characters_.size()); }
     const std::vector<Character>& characters() const { return characters_; }
     const std::vector<const model::SkinnedModel*>& models() const { return models_; }
     const model::SkinnedModel& model(std::uint32_t index) const { return *models_[index]; }
     const model::SkinnedModel& modelOf(std::uint32_t character) const { return *models_[characters_[character].model]; }
+    // Every model's clips, flattened (the CPU jobs' input and what the GPU path uploads).
+    const anim::ClipLibrary& library() const { return library_; }
+    const Gaits& gaits(std::uint32_t model) const { return gaits_[model]; }
+    const BehaviourSettings& behaviour() const { return behaviour_; }
 
-    // Writes the skinning matrices of every character at global time `time` (seconds): character c's
-    // joint j goes to out[boneOffsets[c] + j]. Work is split over the machine's cores.
-    void animate(float time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets) const;
+    // ---- Driving the crowd ----
+    // Adds a character playing its clip in place under the crowd's behaviour; returns its index.
+    // Renderers size their buffers when they are made: spawn before making one.
+    std::uint32_t spawn(const Character& character);
+    // From time `at` on (or once its current crossfade ends), walk to `target` (world x, z) with clip
+    // `gait` (-1: the model's walk) at `rate` times its speed, turning on the way, and stop there.
+    void moveTo(std::uint32_t character, glm::vec2 target, float at, std::int32_t gait = -1, float rate = 1.0f);
+    // From time `at` on, crossfade over `fade` seconds to `clip` at `rate` and keep playing it; a clip
+    // with root motion carries the character forward along its heading.
+    void play(std::uint32_t character, std::uint32_t clip, float at, float fade = 0.3f, float rate = 1.0f);
+    // Plans every character's segments up to `time`. Going back in time replays the behaviours from
+    // the start (commands given so far are forgotten).
+    void advanceTo(float time);
+    // The characters whose segment the last advanceTo (or command) changed, and a counter of those
+    // calls, so a renderer can upload just them when it has seen every generation before.
+    const std::vector<std::uint32_t>& lastChanged() const { return lastChanged_; }
+    std::uint64_t generation() const { return generation_; }
+    // Each character's current segment.
+    const std::vector<gpu::MotionRecord>& segments() const { return segments_; }
+    // Where character `index` is and what it plays at `time` (within its planned segment).
+    MotionState stateAt(std::uint32_t index, float time) const;
 
+    // ---- The CPU animation path (the reference) ----
+    // Writes the skinning matrices of every character at `time` (seconds): character c's joint j goes
+    // to out[boneOffsets[c] + j]; with `records`, also each record's placement, clips and phase. Jobs
+    // (sample, blend, hierarchy) per character, split over `pool`'s threads (default: every core).
+    void animate(float time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
+                 std::span<gpu::CharacterRecord> records = {}, WorkerPool* pool = nullptr) const;
     // The skinning matrices of one character (for tests and pose export).
     void animateCharacter(std::uint32_t index, float time, std::span<gpu::BoneRows> out) const;
+    // A record's motion fields (placement, clips, phase) at `time`.
+    void poseRecord(std::uint32_t index, float time, gpu::CharacterRecord& record) const;
 
-    // Centre and radius of the ground the crowd stands on, and its tallest model's height.
+    // Centre and radius of the ground the crowd stands on (and may walk over), and its tallest model's height.
     glm::vec3 center() const;
     float radius() const;
     float tallestHeight() const;
 
 private:
+    void addCharacter(const Character& character);
+    void startBehaviours();
+    void replan(std::uint32_t character, float time);
+    void command(std::uint32_t character, float at);
+    PlanContext planContext(std::uint32_t character) const;
+
     std::vector<const model::SkinnedModel*> models_;
     std::vector<Character> characters_;
+    anim::ClipLibrary library_;
+    std::vector<Gaits> gaits_;
+    BehaviourSettings behaviour_;
+    std::vector<gpu::MotionRecord> segments_;
+    std::vector<Agent> agents_;
+    float plannedTo_ = 0.0f;
+    std::vector<std::uint32_t> lastChanged_;
+    std::vector<std::uint8_t> changed_;
+    std::uint64_t generation_ = 0;
+    // Key cursors of the sampling jobs, six per joint (two clips) per character: a cache of where each
+    // track's keys were last found, private to the thread animating that character.
+    mutable std::vector<std::uint16_t> cursors_;
+    std::vector<std::uint64_t> cursorOffsets_;
 };
 
 }  // namespace crowd

@@ -27,7 +27,7 @@ std::uint32_t meshCapacityOf(const RendererOptions& options, const crowd::Crowd&
 
 }  // namespace
 
-CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd,
+CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& crowd,
                              const RendererOptions& options)
     : context_(context),
       crowd_(crowd),
@@ -35,6 +35,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       buffers_(context, crowd, options.framesInFlight),
       lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityOf(options, crowd)),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
+      animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
       target_(std::make_unique<render::RenderTarget>(context, options.size)),
       maxTargetDimension_(options.maxTargetDimension),
       shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
@@ -46,6 +47,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
       impostorSettings_(options.impostorSettings),
       atlas_(options.atlas),
       cull_(options.cull),
+      animation_(options.animation),
       shadows_(options.shadows),
       frames_(options.framesInFlight) {
     camera = render::frameCrowd(shape_.center, shape_.radius, shape_.characterHeight, aspectOf(options.size));
@@ -63,7 +65,6 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, const crowd::Cro
 
 CrowdRenderer::~CrowdRenderer() {
     vkDeviceWaitIdle(context_.device);
-    for (gpu::Buffer& b : poseStaging_) gpu::destroyBuffer(context_, b);
     for (Frame& frame : frames_) {
         vkDestroyFence(context_.device, frame.fence, nullptr);
         vkFreeCommandBuffers(context_.device, context_.commandPool, 1, &frame.cmd);
@@ -83,32 +84,53 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     frame.stats.intervalMs = lastFrameStart_ < 0.0 ? 0.0 : start - lastFrameStart_;
     lastFrameStart_ = start;
 
-    // 1. Animation: every character's clip sampled at its own time, bones written for the GPU.
+    // 1. Motion: new segments for the characters whose plan ran out (events, not every character).
+    const double planStart = nowMs();
+    crowd_.advanceTo(time);
+    // 2. The CPU path samples every character's clips here; the GPU path moves them in its passes.
     const double animateStart = nowMs();
-    const bool animate = method_->needsAnimation();
-    if (animate) crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneOffsets());
+    const std::optional<render::AnimationPath> path = animationThisFrame();
+    if (path == render::AnimationPath::Cpu)
+        crowd_.animate(time, buffers_.boneStaging(slot), buffers_.boneOffsets(), buffers_.mutableRecords());
+    else if (cull_.mode == render::CullMode::Cpu)
+        buffers_.updateRecords(crowd_, time);  // the CPU reference culls from CPU-side records
     const double recordStart = nowMs();
-    frame.stats.animateMs = recordStart - animateStart;
+    frame.stats.planMs = animateStart - planStart;
+    frame.stats.animateMs = path == render::AnimationPath::Cpu ? recordStart - animateStart : 0.0;
 
-    // 2-6. Upload, cull, skin, draw, timestamps: recorded into one command buffer and submitted.
+    // 3-8. Upload or motion, cull, palettes, skin, draw, timestamps: one command buffer, one submit.
     VK_CHECK(vkResetCommandBuffer(frame.cmd, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
-    recordFrame(frame.cmd, slot, time, animate, hooks);
+    recordFrame(frame.cmd, slot, time, path.value_or(render::AnimationPath::Cpu), hooks);
     VK_CHECK(vkEndCommandBuffer(frame.cmd));
     submit(frame, hooks);
     frame.stats.recordMs = nowMs() - recordStart;
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, bool uploadBones,
+std::optional<render::AnimationPath> CrowdRenderer::animationThisFrame() const {
+    if (!method_->needsAnimation()) return std::nullopt;
+    return method_->fixedLayout() ? render::AnimationPath::Cpu : animation_;
+}
+
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, render::AnimationPath path,
                                 const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
-    if (impostorDraw_) uploadAnimationState(cmd, slot, time);
-    if (uploadBones) buffers_.recordBoneUpload(cmd, slot);
-    if (uploadBones || impostorDraw_) timer_.mark(cmd, "upload");
+    const bool animates = method_->needsAnimation();
+    if (animates && path == render::AnimationPath::Cpu) {
+        buffers_.recordCpuAnimationUpload(cmd, slot);
+        timer_.mark(cmd, "upload");
+    } else if (animates) {
+        animationPass_.recordMotion(cmd, slot, time);
+        timer_.mark(cmd, "motion");
+    }
     recordCulling(cmd, slot);
     timer_.mark(cmd, "cull");
+    if (animates && path == render::AnimationPath::Gpu) {
+        animationPass_.recordPalettes(cmd);
+        timer_.mark(cmd, "palette");
+    }
     method_->recordSkinning(cmd, timer_);
     const glm::mat4 light = lightViewProjection();  // the shadow pass draws with it, the scene samples with it
     recordShadows(cmd, slot, light);
@@ -190,36 +212,7 @@ void CrowdRenderer::enableImpostors() {
         throw gpu::Error("impostors: the atlas given was baked for other models");
     }
     impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout());
-    for (std::size_t i = 0; i < frames_.size(); ++i) {
-        poseStaging_.push_back(gpu::createBuffer(context_, buffers_.characters().size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                                 gpu::MemoryUse::HostUpload, "character records (upload)"));
-        std::memcpy(poseStaging_.back().mapped, buffers_.records().data(), buffers_.characters().size);
-    }
 }
-
-// ---- ISSUE 10 STAND-IN: delete when GPU animation (issue 10) merges ----------------------------
-// Records are uploaded once, so their pose.x is the phase at time 0; impostors need each frame's.
-// Until the GPU animation pass writes the records, this rewrites every character's phase
-// (timeOffset + time x speed) / clip duration and uploads the records. Impostors read only the record.
-void CrowdRenderer::uploadAnimationState(VkCommandBuffer cmd, std::uint32_t slot, float time) {
-    auto* records = static_cast<gpu::CharacterRecord*>(poseStaging_[slot].mapped);
-    for (std::uint32_t i = 0; i < crowd_.size(); ++i) {
-        const crowd::Character& c = crowd_.characters()[i];
-        const model::SkinnedModel& m = crowd_.modelOf(i);
-        const float duration = m.clips.empty() ? 0.0f : m.clips[c.clip].duration;
-        records[i].pose.x = duration > 0.0f ? (c.timeOffset + time * c.speed) / duration : 0.0f;
-    }
-    constexpr VkPipelineStageFlags2 readers = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    const VkBuffer characters = buffers_.characters().buffer;
-    gpu::bufferBarrier(cmd, characters, {readers, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-    const VkBufferCopy region{0, 0, buffers_.characters().size};
-    vkCmdCopyBuffer(cmd, poseStaging_[slot].buffer, characters, 1, &region);
-    gpu::bufferBarrier(cmd, characters, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                       {readers, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
-}
-// ---- end of ISSUE 10 STAND-IN ------------------------------------------------------------------
 
 void CrowdRenderer::submit(Frame& frame, const PresentHooks* hooks) {
     VkCommandBufferSubmitInfo command{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
@@ -285,6 +278,8 @@ render::Rgba8Image CrowdRenderer::readback() {
 std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
     std::vector<skin::MemoryItem> items = {{"geometry pool (vertices, LOD indices, textures)", pool_.bytes()},
                                            {"character records and bone matrices", buffers_.deviceBytes()},
+                                           {"clip library (GPU animation)", animationPass_.libraryBytes()},
+                                           {"motion segments (GPU animation)", animationPass_.segmentBytes()},
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"render target", target_->bytes()},
                                            {"shadow map", shadowMap_.bytes()}};

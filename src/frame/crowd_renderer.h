@@ -1,12 +1,15 @@
 #pragma once
-// One frame of the crowd, top to bottom in renderFrame: animate on the CPU -> upload bones -> cull and
-// choose LODs -> skin the visible (method) -> draw ground and characters -> resolve timestamps.
+// One frame of the crowd, top to bottom in renderFrame: plan motion (CPU, only characters whose plan
+// ran out) -> animate: on the CPU and upload bones, or on the GPU move every character -> cull and
+// choose LODs -> (GPU path) bone matrices of the characters culling kept -> skin the visible (method)
+// -> shadow map -> draw ground and characters -> resolve timestamps.
 // Headless: it renders into an offscreen target; a presenter adds its commands through PresentHooks.
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -14,6 +17,7 @@
 
 #include "crowd/crowd.h"
 #include "gpu/gpu_timer.h"
+#include "render/animation_pass.h"
 #include "render/camera.h"
 #include "render/character_draw.h"
 #include "render/crowd_buffers.h"
@@ -34,6 +38,7 @@ namespace frame {
 struct RendererOptions {
     VkExtent2D size{1280, 720};
     skin::Method method = skin::Method::TwoPass;
+    render::AnimationPath animation = render::AnimationPath::Gpu;
     render::CullSettings cull;
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
     std::uint32_t shadowMapSize = 2048;  // texels per side
@@ -50,7 +55,8 @@ struct RendererOptions {
 };
 
 struct FrameStats {
-    double animateMs = 0.0;  // CPU: sampling clips and computing bone matrices
+    double planMs = 0.0;     // CPU: planning the motion segments whose plan ran out (crowd::Crowd::advanceTo)
+    double animateMs = 0.0;  // CPU path: sampling clips and computing bone matrices (0 on the GPU path)
     double recordMs = 0.0;   // CPU: culling on the CPU (--cull cpu), recording and submitting
     double intervalMs = 0.0; // wall clock since the previous frame started (0 for the first)
     std::vector<gpu::PassTime> gpu;  // per pass, from timestamp queries
@@ -68,7 +74,9 @@ struct PresentHooks {
 
 class CrowdRenderer {
 public:
-    CrowdRenderer(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RendererOptions& options);
+    // The crowd is planned (advanceTo) by each frame, so it must outlive the renderer and not be shared
+    // with another one.
+    CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RendererOptions& options);
     ~CrowdRenderer();
     CrowdRenderer(const CrowdRenderer&) = delete;
     CrowdRenderer& operator=(const CrowdRenderer&) = delete;
@@ -84,6 +92,9 @@ public:
     void setCull(const render::CullSettings& cull);
     const render::CullSettings& cull() const { return cull_; }
     void setShadows(bool on) { shadows_ = on; }
+    // Where the bone matrices come from, from the next frame on.
+    void setAnimation(render::AnimationPath path) { animation_ = path; }
+    render::AnimationPath animation() const { return animation_; }
     bool shadows() const { return shadows_; }
     // Hands over the statistics collected so far and starts a new list.
     std::vector<FrameStats> takeStats() { return std::exchange(stats_, {}); }
@@ -121,9 +132,12 @@ private:
         FrameStats stats;
     };
     void collect(Frame& frame, std::uint32_t slot);
-    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, bool uploadBones, const PresentHooks* hooks);
+    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, render::AnimationPath path,
+                     const PresentHooks* hooks);
+    // The path this frame takes: none when the method no longer reads bones; the CPU for the fixed
+    // layout's one frame (it needs every character's bones, not only the visible ones).
+    std::optional<render::AnimationPath> animationThisFrame() const;
     void enableImpostors();
-    void uploadAnimationState(VkCommandBuffer cmd, std::uint32_t slot, float time);
     void recordCulling(VkCommandBuffer cmd, std::uint32_t slot);
     void recordShadows(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
     void recordScene(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
@@ -132,11 +146,12 @@ private:
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
 
     const gpu::VulkanContext& context_;
-    const crowd::Crowd& crowd_;
+    crowd::Crowd& crowd_;
     render::GeometryPool pool_;
     render::CrowdBuffers buffers_;
     render::DrawLists lists_;
     render::CullPass cullPass_;
+    render::AnimationPass animationPass_;
     std::unique_ptr<render::RenderTarget> target_;
     std::uint32_t maxTargetDimension_;
     render::CrowdShape shape_;
@@ -148,8 +163,8 @@ private:
     render::ImpostorSettings impostorSettings_;
     std::shared_ptr<const render::ImpostorAtlas> atlas_;
     std::unique_ptr<render::ImpostorDraw> impostorDraw_;
-    std::vector<gpu::Buffer> poseStaging_;  // issue 10 stand-in: see uploadAnimationState
     render::CullSettings cull_;
+    render::AnimationPath animation_;
     bool shadows_;
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     std::vector<Frame> frames_;

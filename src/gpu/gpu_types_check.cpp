@@ -35,4 +35,11 @@ static_assert(offsetof(SceneUniforms, materialFlags) == 112 && offsetof(SceneUni
               offsetof(SceneUniforms, lightViewProjection) == 128 + 16 * MAX_MATERIALS &&
               sizeof(SceneUniforms) == 128 + 16 * MAX_MATERIALS + 80);
 
+// Animation tables: vec4 members only (std430 arrays of them need no padding), a track is four uints.
+static_assert(sizeof(AnimationModel) == 64 && offsetof(AnimationModel, root) == 16);
+static_assert(sizeof(AnimationJoint) == 96 && offsetof(AnimationJoint, inverseBind) == 48);
+static_assert(sizeof(AnimationClip) == 32 && sizeof(AnimationTrack) == 16);
+static_assert(sizeof(MotionRecord) == 64 && offsetof(MotionRecord, clips) == 48);
+static_assert(sizeof(PalettePush) == 16 && sizeof(MotionPush) == 32);
+
 }  // namespace gpu

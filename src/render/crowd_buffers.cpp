@@ -1,5 +1,7 @@
 #include "render/crowd_buffers.h"
 
+#include <cstring>
+
 #include <algorithm>
 #include <numeric>
 #include <string>
@@ -41,9 +43,8 @@ std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, st
         const crowd::Character& c = crowd.characters()[i];
         records[i].placement = glm::vec4(c.position, c.heading);
         records[i].tint = glm::vec4(c.tint, c.scale);
-        records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, c.clip | (c.clip << 16));
-        const float duration = crowd.modelOf(i).clips.empty() ? 0.0f : crowd.modelOf(i).clips[c.clip].duration;
-        records[i].pose = glm::vec4(duration > 0.0f ? c.timeOffset / duration : 0.0f, 0.0f, 0.0f, 0.0f);
+        records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, 0u);
+        crowd.poseRecord(i, 0.0f, records[i]);
     }
     return records;
 }
@@ -59,14 +60,13 @@ CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd
     records_ = characterRecords(crowd, layout_.offsets);
     try {
         characters_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),
-                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "character records");
+                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                "character records");
         bones_ = gpu::createBuffer(context, boneBytes,
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    gpu::MemoryUse::DeviceLocal, "bone matrices");
-        for (std::uint32_t i = 0; i < framesInFlight; ++i)
-            boneStaging_.push_back(gpu::createBuffer(context, boneBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                                     gpu::MemoryUse::HostUpload, "bone matrices (upload)"));
+        staging_.resize(framesInFlight);
     } catch (...) {
         release();
         throw;
@@ -76,26 +76,48 @@ CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd
 CrowdBuffers::~CrowdBuffers() { release(); }
 
 void CrowdBuffers::release() {
-    for (gpu::Buffer& b : boneStaging_) gpu::destroyBuffer(context_, b);
-    boneStaging_.clear();
+    for (Staging& s : staging_) {
+        gpu::destroyBuffer(context_, s.bones);
+        gpu::destroyBuffer(context_, s.records);
+    }
+    staging_.clear();
     gpu::destroyBuffer(context_, bones_);
     gpu::destroyBuffer(context_, characters_);
 }
 
-std::span<gpu::BoneRows> CrowdBuffers::boneStaging(std::uint32_t frameSlot) {
-    return {static_cast<gpu::BoneRows*>(boneStaging_[frameSlot].mapped), static_cast<std::size_t>(layout_.totalRows)};
+CrowdBuffers::Staging& CrowdBuffers::staging(std::uint32_t frameSlot) {
+    // Made the first time the CPU path runs: the GPU path never needs host copies of the bones.
+    Staging& s = staging_[frameSlot];
+    if (!s.bones.buffer) {
+        s.bones = gpu::createBuffer(context_, bones_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::HostUpload,
+                                    "bone matrices (upload)");
+        s.records = gpu::createBuffer(context_, characters_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                      gpu::MemoryUse::HostUpload, "character records (upload)");
+    }
+    return s;
 }
 
-void CrowdBuffers::recordBoneUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) const {
-    constexpr VkPipelineStageFlags2 readers = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    // The previous frame's shaders must be done reading before the copy overwrites the bones.
-    gpu::bufferBarrier(cmd, bones_.buffer, {readers, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-    const VkBufferCopy region{0, 0, bones_.size};
-    vkCmdCopyBuffer(cmd, boneStaging_[frameSlot].buffer, bones_.buffer, 1, &region);
-    gpu::bufferBarrier(cmd, bones_.buffer, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                       {readers, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
+std::span<gpu::BoneRows> CrowdBuffers::boneStaging(std::uint32_t frameSlot) {
+    return {static_cast<gpu::BoneRows*>(staging(frameSlot).bones.mapped), static_cast<std::size_t>(layout_.totalRows)};
+}
+
+void CrowdBuffers::recordCpuAnimationUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) {
+    Staging& s = staging(frameSlot);
+    std::memcpy(s.records.mapped, records_.data(), records_.size() * sizeof(gpu::CharacterRecord));
+    // The previous frames' passes must be done reading before the copies overwrite bones and records.
+    gpu::memoryBarrier(cmd, {kCharacterReaders, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    const VkBufferCopy bones{0, 0, bones_.size};
+    vkCmdCopyBuffer(cmd, s.bones.buffer, bones_.buffer, 1, &bones);
+    const VkBufferCopy records{0, 0, characters_.size};
+    vkCmdCopyBuffer(cmd, s.records.buffer, characters_.buffer, 1, &records);
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                       {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
+}
+
+void CrowdBuffers::updateRecords(const crowd::Crowd& crowd, float time) {
+    crowd::WorkerPool::shared().parallelFor(crowd.size(), 1024, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t i = begin; i < end; ++i) crowd.poseRecord(i, time, records_[i]);
+    });
 }
 
 }  // namespace render

@@ -15,6 +15,10 @@ namespace gpu { class VulkanContext; }
 
 namespace render {
 
+// Every stage that reads the character records or the bones.
+constexpr VkPipelineStageFlags2 kCharacterReaders =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+
 // Bones of a model with `jointCount` joints occupy this many BoneRows per character; the stride keeps
 // every character's block aligned for a dynamic uniform-buffer offset (the vertex-shader baseline)
 // and a storage offset.
@@ -42,10 +46,15 @@ public:
     CrowdBuffers(const CrowdBuffers&) = delete;
     CrowdBuffers& operator=(const CrowdBuffers&) = delete;
 
-    // Where the CPU writes this frame's bone matrices (host-visible, mapped).
+    // The CPU animation path: where it writes this frame's bone matrices (host-visible, mapped; made
+    // on first use), and the copies of those bones and of records() to the device, with their barriers.
     std::span<gpu::BoneRows> boneStaging(std::uint32_t frameSlot);
-    // Copies this frame's bones to the device-local bone buffer, with the barriers around it.
-    void recordBoneUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) const;
+    void recordCpuAnimationUpload(VkCommandBuffer cmd, std::uint32_t frameSlot);
+    // The CPU's copy of the records, for the CPU path to write and the CPU cull reference to read.
+    std::span<gpu::CharacterRecord> mutableRecords() { return records_; }
+    // Recomputes the motion fields of records() at `time` on the CPU (what the GPU motion pass writes
+    // on the device), for the CPU cull reference.
+    void updateRecords(const crowd::Crowd& crowd, float time);
 
     const gpu::Buffer& characters() const { return characters_; }
     const gpu::Buffer& bones() const { return bones_; }
@@ -63,7 +72,11 @@ private:
     std::vector<gpu::CharacterRecord> records_;
     gpu::Buffer characters_;
     gpu::Buffer bones_;
-    std::vector<gpu::Buffer> boneStaging_;
+    struct Staging {
+        gpu::Buffer bones, records;
+    };
+    Staging& staging(std::uint32_t frameSlot);
+    std::vector<Staging> staging_;
 };
 
 }  // namespace render

@@ -30,7 +30,10 @@ void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
         scene.clip.clear();
         characters = app::buildCharacters(models, scene);
     }
-    auto next = std::make_unique<crowd::Crowd>(models.pointers(), std::move(characters));
+    crowd::BehaviourSettings behaviour;
+    behaviour.kind = scene.behaviour;
+    behaviour.seed = scene.seed;
+    auto next = std::make_unique<crowd::Crowd>(models.pointers(), std::move(characters), behaviour);
     app::checkCrowdFits(context_, *next, method_, size);
 
     // Release the current crowd (renderer first: it refers to the crowd, which refers to the model)

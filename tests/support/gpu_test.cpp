@@ -84,7 +84,7 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::
 
 namespace {
 
-render::Rgba8Image renderCrowd(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const render::Camera& camera) {
+render::Rgba8Image renderCrowd(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::Camera& camera) {
     frame::RendererOptions options;
     options.size = {192, 108};
     options.method = skin::Method::Compute;

@@ -1,0 +1,19 @@
+#include "anim/root_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anim {
+
+glm::vec2 rootMotionAt(const glm::vec2* samples, float phase) {
+    const float cycles = std::floor(phase);
+    const float x = (phase - cycles) * static_cast<float>(ROOT_MOTION_SAMPLES);
+    const int i = std::min(static_cast<int>(x), ROOT_MOTION_SAMPLES - 1);
+    const float f = x - static_cast<float>(i);
+    const glm::vec2 within = samples[i] + (samples[i + 1] - samples[i]) * f;
+    return samples[ROOT_MOTION_SAMPLES] * cycles + within;
+}
+
+glm::vec2 RootMotion::at(float phase) const { return rootMotionAt(samples.data(), phase); }
+
+}  // namespace anim

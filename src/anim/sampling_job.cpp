@@ -1,0 +1,105 @@
+#include "anim/sampling_job.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "anim/sample_clip.h"
+
+namespace anim {
+namespace {
+
+struct KeySpan {
+    std::uint32_t key;  // at or before the time (clamped to the ends)
+    float blend;        // towards the next key
+    float interval;     // seconds between the two keys
+};
+
+// The span holding t: first the cursor's span and the one after it, then a binary search.
+KeySpan findKeys(const float* times, std::uint32_t count, float t, std::uint16_t& cursor) {
+    if (count < 2 || t <= times[0]) return {0, 0.0f, 0.0f};
+    if (t >= times[count - 1]) return {count - 1, 0.0f, 0.0f};
+    std::uint32_t key = std::min<std::uint32_t>(cursor, count - 2);
+    if (!(times[key] <= t && t < times[key + 1])) {
+        if (key + 2 < count && times[key + 1] <= t && t < times[key + 2]) {
+            ++key;
+        } else {
+            key = static_cast<std::uint32_t>(std::upper_bound(times, times + count, t) - times) - 1;
+        }
+    }
+    cursor = static_cast<std::uint16_t>(std::min<std::uint32_t>(key, std::numeric_limits<std::uint16_t>::max()));
+    const float interval = times[key + 1] - times[key];
+    return {key, (t - times[key]) / interval, interval};
+}
+
+// Hermite spline between keys k and k+1 as glTF defines CUBICSPLINE (values are triplets).
+glm::vec4 cubicSpline(const glm::vec4* v, const KeySpan& span) {
+    const float s = span.blend, s2 = s * s, s3 = s2 * s;
+    const glm::vec4 p0 = v[span.key * 3 + 1];
+    const glm::vec4 m0 = v[span.key * 3 + 2] * span.interval;
+    const glm::vec4 p1 = v[(span.key + 1) * 3 + 1];
+    const glm::vec4 m1 = v[(span.key + 1) * 3 + 0] * span.interval;
+    return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
+}
+
+glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
+                      std::uint16_t& cursor) {
+    const KeySpan span = findKeys(library.keyTimes().data() + track.firstKey, track.keyCount, t, cursor);
+    const glm::vec4* values = library.keyValues().data() + track.firstValue;
+    const bool lastKey = span.key + 1 >= track.keyCount;
+    if (track.interpolation == 2u) {  // cubic spline
+        if (lastKey || span.blend == 0.0f) return values[span.key * 3 + 1];
+        const glm::vec4 value = cubicSpline(values, span);
+        if (!rotation) return value;
+        // Between opposite keys the spline can pass through zero: the short arc between them instead.
+        const float length = glm::length(value);
+        if (length > 1e-6f) return value / length;
+        return slerpShortest(glm::normalize(values[span.key * 3 + 1]), glm::normalize(values[(span.key + 1) * 3 + 1]),
+                             span.blend);
+    }
+    if (track.interpolation == 0u || lastKey || span.blend == 0.0f) return values[span.key];
+    if (rotation) return slerpShortest(values[span.key], values[span.key + 1], span.blend);
+    return glm::mix(values[span.key], values[span.key + 1], span.blend);
+}
+
+glm::quat toQuat(const glm::vec4& v) { return glm::normalize(glm::quat(v.w, v.x, v.y, v.z)); }
+
+}  // namespace
+
+glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s) {
+    float cosTheta = glm::dot(a, b);
+    if (cosTheta < 0.0f) b = -b, cosTheta = -cosTheta;
+    glm::vec4 q;
+    if (cosTheta > 1.0f - std::numeric_limits<float>::epsilon()) {
+        q = glm::mix(a, b, s);
+    } else {
+        const float angle = std::acos(cosTheta);
+        q = (std::sin((1.0f - s) * angle) * a + std::sin(s * angle) * b) / std::sin(angle);
+    }
+    return glm::normalize(q);
+}
+
+bool SamplingJob::validate() const {
+    if (!library || model >= library->modelCount() || clip >= library->clipCount(model)) return false;
+    const std::uint32_t joints = library->jointCount(model);
+    return output.size() == joints && cursors.size() >= 3u * joints;
+}
+
+void SamplingJob::run() const {
+    const gpu::AnimationModel& m = library->models()[model];
+    const gpu::AnimationClip& c = library->clip(model, clip);
+    const float t = wrapTime(time, c.timing.x);
+    for (std::uint32_t j = 0; j < m.info.y; ++j) {
+        const gpu::AnimationJoint& rest = library->joints()[m.info.x + j];
+        const gpu::AnimationTrack* tracks = library->tracks().data() + c.info.x + 3u * j;
+        std::uint16_t* cursor = cursors.data() + 3u * j;
+        Transform& out = output[j];
+        out.translation = tracks[0].keyCount ? glm::vec3(sampleTrack(*library, tracks[0], false, t, cursor[0]))
+                                             : glm::vec3(rest.restTranslation);
+        out.rotation = toQuat(tracks[1].keyCount ? sampleTrack(*library, tracks[1], true, t, cursor[1]) : rest.restRotation);
+        out.scale = tracks[2].keyCount ? glm::vec3(sampleTrack(*library, tracks[2], false, t, cursor[2]))
+                                       : glm::vec3(rest.restScale);
+    }
+}
+
+}  // namespace anim

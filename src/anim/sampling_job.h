@@ -1,0 +1,34 @@
+#pragma once
+// Sampling job (ozz's SamplingJob over the flat library): one clip of one model at a time gives every
+// joint's local transform. Each track remembers, in a caller-owned cursor, the key span it used last:
+// time mostly moves forward by less than a key, so the next sample finds its span in one or two
+// comparisons instead of a binary search. A cursor is only a hint; any value gives the same pose.
+#include <cstdint>
+#include <span>
+
+#include "anim/clip_library.h"
+#include "anim/transform.h"
+
+namespace anim {
+
+struct SamplingJob {
+    const ClipLibrary* library = nullptr;
+    std::uint32_t model = 0;
+    std::uint32_t clip = 0;  // the model's own clip index
+    float time = 0.0f;       // seconds; wrapped into the clip, so clips loop
+    // Three per joint (translation, rotation, scale), kept by the caller between frames.
+    std::span<std::uint16_t> cursors;
+    std::span<Transform> output;  // one per joint of the model
+
+    // True when the spans fit the model and the clip exists.
+    bool validate() const;
+    // Writes every joint's local transform: keyed paths sampled as glTF defines their interpolation
+    // (rotations along the shorter arc, normalized), the others at their rest value. Allocates nothing.
+    void run() const;
+};
+
+// Spherical interpolation of unit quaternions (x, y, z, w) along the shorter arc, normalized; the
+// same steps as glm::slerp, repeated in shaders/animation.glsl.inc.
+glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s);
+
+}  // namespace anim

@@ -1,0 +1,102 @@
+#include "crowd/motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crowd {
+
+float motionPhase(const gpu::MotionRecord& segment, float elapsed) {
+    // d(phase)/dt rises linearly from the from-clip's rate to the to-clip's over the crossfade, so the
+    // phase is quadratic there and linear after it.
+    const float fade = segment.timing.y, from = segment.phase.y, to = segment.phase.z;
+    if (fade <= 0.0f) return segment.phase.x + to * elapsed;
+    if (elapsed < fade) return segment.phase.x + from * elapsed + (to - from) * elapsed * elapsed / (2.0f * fade);
+    return segment.phase.x + 0.5f * (from + to) * fade + to * (elapsed - fade);
+}
+
+float motionWeight(const gpu::MotionRecord& segment, float elapsed) {
+    const float fade = segment.timing.y;
+    return fade > 0.0f ? std::min(elapsed / fade, 1.0f) : 1.0f;
+}
+
+float motionHeading(const gpu::MotionRecord& segment, float elapsed) {
+    return segment.origin.w + segment.timing.z * std::min(elapsed, segment.timing.w);
+}
+
+glm::vec2 turnToWorld(glm::vec2 m, float heading) {
+    // As characterTransform turns the model: +z forward turns towards +x for a positive heading.
+    const float c = std::cos(heading), s = std::sin(heading);
+    return {c * m.x + s * m.y, c * m.y - s * m.x};
+}
+
+namespace {
+
+// Displacement along the segment's path from its start to `elapsed`, in world space (x, z).
+glm::vec2 travelled(const gpu::MotionRecord& segment, float elapsed, const anim::ClipLibrary& library,
+                    std::uint32_t model) {
+    const std::uint32_t from = segment.clips.x, to = segment.clips.y;
+    auto rootStep = [&](std::uint32_t clip, float a, float b) {
+        return library.rootMotion(model, clip, b) - library.rootMotion(model, clip, a);
+    };
+    // While turning or crossfading, the midpoint rule over MOTION_QUADRATURE_STEPS steps: each step's
+    // root motion is exact for its phases, only its direction and blend weight are taken at its middle.
+    const float window = std::max(segment.timing.y, segment.timing.w);
+    const float curved = std::min(elapsed, window);
+    glm::vec2 offset(0.0f);
+    if (curved > 0.0f) {
+        const float h = curved / static_cast<float>(MOTION_QUADRATURE_STEPS);
+        float phaseA = motionPhase(segment, 0.0f);
+        for (int k = 0; k < MOTION_QUADRATURE_STEPS; ++k) {
+            const float phaseB = motionPhase(segment, h * static_cast<float>(k + 1));
+            const float middle = h * (static_cast<float>(k) + 0.5f);
+            const float w = motionWeight(segment, middle);
+            const glm::vec2 step = rootStep(from, phaseA, phaseB) * (1.0f - w) + rootStep(to, phaseA, phaseB) * w;
+            offset += turnToWorld(step, motionHeading(segment, middle));
+            phaseA = phaseB;
+        }
+    }
+    // After both, a straight line along the to-clip's root motion: exact however long the segment.
+    if (elapsed > window)
+        offset += turnToWorld(rootStep(to, motionPhase(segment, window), motionPhase(segment, elapsed)),
+                              motionHeading(segment, window));
+    return offset;
+}
+
+}  // namespace
+
+MotionState evaluateMotion(const gpu::MotionRecord& segment, float time, const anim::ClipLibrary& library,
+                           std::uint32_t model) {
+    const float elapsed = std::max(time - segment.timing.x, 0.0f);
+    MotionState state;
+    state.position = glm::vec3(segment.origin);
+    if (segment.phase.w != 0.0f) {
+        const glm::vec2 offset = travelled(segment, elapsed, library, model);
+        state.position.x += offset.x;
+        state.position.z += offset.y;
+    }
+    state.heading = motionHeading(segment, elapsed);
+    state.clipFrom = segment.clips.x;
+    state.clipTo = segment.clips.y;
+    state.phase = motionPhase(segment, elapsed);
+    state.weight = motionWeight(segment, elapsed);
+    return state;
+}
+
+float cyclesPerSecond(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip, float rate) {
+    if (clip >= library.clipCount(model)) return 0.0f;
+    const float duration = library.duration(model, clip);
+    return duration > 0.0f ? rate / duration : 0.0f;
+}
+
+gpu::MotionRecord inPlaceSegment(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip,
+                                 const glm::vec3& position, float heading, float start, float phase, float rate) {
+    gpu::MotionRecord segment{};
+    const float cycles = cyclesPerSecond(library, model, clip, rate);
+    segment.origin = glm::vec4(position, heading);
+    segment.timing = glm::vec4(start, 0.0f, 0.0f, 0.0f);
+    segment.phase = glm::vec4(phase, cycles, cycles, 0.0f);
+    segment.clips = glm::uvec4(clip, clip, 0u, 0u);
+    return segment;
+}
+
+}  // namespace crowd

@@ -1,0 +1,187 @@
+#include "render/animation_pass.h"
+
+#include <algorithm>
+#include <cstring>
+#include <span>
+
+#include "gpu/barriers.h"
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+#include "motion.comp.spv.h"
+#include "palette.comp.spv.h"
+#include "palette_dispatch.comp.spv.h"
+
+namespace render {
+namespace {
+
+// The palette pass's threads per workgroup (palette.comp.glsl): a group takes this many joints.
+constexpr std::uint32_t kPaletteThreads = 64;
+
+constexpr gpu::Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+
+// A table as a device buffer; empty tables get one zeroed element, since buffers cannot be empty.
+template <typename T>
+gpu::Buffer upload(const gpu::VulkanContext& context, const std::vector<T>& table, const char* what) {
+    std::vector<T> padded = table;
+    if (padded.empty()) padded.emplace_back();
+    return gpu::createBufferWithData(context, std::as_bytes(std::span(padded)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, what);
+}
+
+std::uint32_t groupsFor(std::uint32_t items, std::uint32_t perGroup, std::uint32_t maxGroups) {
+    return std::clamp((items + perGroup - 1) / perGroup, 1u, maxGroups);
+}
+
+}  // namespace
+
+const char* animationPathName(AnimationPath path) { return path == AnimationPath::Cpu ? "cpu" : "gpu"; }
+
+bool parseAnimationPath(const std::string& name, AnimationPath& path) {
+    for (AnimationPath p : {AnimationPath::Cpu, AnimationPath::Gpu})
+        if (name == animationPathName(p)) return path = p, true;
+    return false;
+}
+
+AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const CrowdBuffers& buffers,
+                             const DrawLists& lists, std::uint32_t framesInFlight)
+    : context_(context), crowd_(crowd), lists_(lists) {
+    try {
+        const anim::ClipLibrary& library = crowd.library();
+        library_.push_back(upload(context, library.models(), "animation models"));
+        library_.push_back(upload(context, library.joints(), "animation joints"));
+        library_.push_back(upload(context, library.clips(), "animation clips"));
+        library_.push_back(upload(context, library.tracks(), "animation tracks"));
+        library_.push_back(upload(context, library.keyTimes(), "animation key times"));
+        library_.push_back(upload(context, library.keyValues(), "animation key values"));
+        library_.push_back(upload(context, library.rootSamples(), "root motion"));
+        for (const gpu::Buffer& b : library_) libraryBytes_ += b.size;
+        const VkDeviceSize segmentBytes = std::max<VkDeviceSize>(1, crowd.size()) * sizeof(gpu::MotionRecord);
+        motions_ = gpu::createBuffer(context, segmentBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                     gpu::MemoryUse::DeviceLocal, "motion segments");
+        for (std::uint32_t i = 0; i < framesInFlight; ++i)
+            staging_.push_back(gpu::createBuffer(context, segmentBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                                 gpu::MemoryUse::HostUpload, "motion segments (upload)"));
+        dispatches_ = gpu::createBuffer(context, std::max(1u, lists.bucketCount()) * sizeof(glm::uvec4),
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                                        gpu::MemoryUse::DeviceLocal, "palette dispatches");
+
+        constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const gpu::BufferBinding motionBindings[] = {{storage, library_[0].buffer}, {storage, library_[2].buffer},
+                                                     {storage, library_[6].buffer}, {storage, motions_.buffer},
+                                                     {storage, buffers.characters().buffer}};
+        motionSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, motionBindings);
+        const gpu::BufferBinding paletteBindings[] = {
+            {storage, library_[0].buffer},          {storage, library_[1].buffer},     {storage, library_[2].buffer},
+            {storage, library_[3].buffer},          {storage, library_[4].buffer},     {storage, library_[5].buffer},
+            {storage, buffers.characters().buffer}, {storage, lists.bucketRecords().buffer},
+            {storage, lists.bucketFrames().buffer}, {storage, lists.visible().buffer}, {storage, buffers.bones().buffer},
+            {storage, dispatches_.buffer}};
+        paletteSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, paletteBindings);
+
+        const VkDescriptorSetLayout motionSetLayout = motionSet_->layout();
+        const VkPushConstantRange motionPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::MotionPush)};
+        motionLayout_ = gpu::createPipelineLayout(context, {&motionSetLayout, 1}, {&motionPush, 1});
+        motion_ = gpu::createComputePipeline(context, motion_comp_spv, motionLayout_, {});
+        const VkDescriptorSetLayout paletteSetLayout = paletteSet_->layout();
+        const VkPushConstantRange palettePush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::PalettePush)};
+        paletteLayout_ = gpu::createPipelineLayout(context, {&paletteSetLayout, 1}, {&palettePush, 1});
+        palette_ = gpu::createComputePipeline(context, palette_comp_spv, paletteLayout_, {});
+        paletteDispatch_ = gpu::createComputePipeline(context, palette_dispatch_comp_spv, paletteLayout_, {});
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+AnimationPass::~AnimationPass() { release(); }
+
+void AnimationPass::release() {
+    for (VkPipeline* p : {&paletteDispatch_, &palette_, &motion_}) {
+        if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
+        *p = VK_NULL_HANDLE;
+    }
+    for (VkPipelineLayout* l : {&paletteLayout_, &motionLayout_}) {
+        if (*l) vkDestroyPipelineLayout(context_.device, *l, nullptr);
+        *l = VK_NULL_HANDLE;
+    }
+    paletteSet_.reset();
+    motionSet_.reset();
+    for (gpu::Buffer& b : staging_) gpu::destroyBuffer(context_, b);
+    staging_.clear();
+    gpu::destroyBuffer(context_, dispatches_);
+    gpu::destroyBuffer(context_, motions_);
+    for (gpu::Buffer& b : library_) gpu::destroyBuffer(context_, b);
+    library_.clear();
+}
+
+void AnimationPass::uploadSegments(VkCommandBuffer cmd, std::uint32_t frameSlot) {
+    const bool sawPrevious = uploadedGeneration_ != kNothing && crowd_.generation() == uploadedGeneration_ + 1;
+    if (crowd_.generation() == uploadedGeneration_) return;
+    const std::vector<gpu::MotionRecord>& segments = crowd_.segments();
+    auto* staged = static_cast<gpu::MotionRecord*>(staging_[frameSlot].mapped);
+    // Changed characters in runs of consecutive indices: one copy region per run.
+    std::vector<VkBufferCopy> regions;
+    auto stage = [&](std::uint32_t c, std::uint32_t slot) {
+        staged[slot] = segments[c];
+        const VkDeviceSize src = slot * sizeof(gpu::MotionRecord), dst = c * sizeof(gpu::MotionRecord);
+        if (!regions.empty() && regions.back().srcOffset + regions.back().size == src &&
+            regions.back().dstOffset + regions.back().size == dst)
+            regions.back().size += sizeof(gpu::MotionRecord);
+        else
+            regions.push_back({src, dst, sizeof(gpu::MotionRecord)});
+    };
+    if (sawPrevious) {
+        std::uint32_t slot = 0;
+        for (std::uint32_t c : crowd_.lastChanged()) stage(c, slot++);
+    } else {
+        for (std::uint32_t c = 0; c < crowd_.size(); ++c) stage(c, c);
+    }
+    uploadedGeneration_ = crowd_.generation();
+    if (regions.empty()) return;
+    // The previous frame's motion pass must be done reading the segments the copy overwrites.
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    vkCmdCopyBuffer(cmd, staging_[frameSlot].buffer, motions_.buffer, static_cast<std::uint32_t>(regions.size()),
+                    regions.data());
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+}
+
+void AnimationPass::recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, float time) {
+    uploadSegments(cmd, frameSlot);
+    // The previous frames' passes must be done reading the records before they are rewritten.
+    gpu::memoryBarrier(cmd, {kCharacterReaders, 0}, kComputeWrite);
+    const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
+    const gpu::MotionPush push{glm::uvec4(crowd_.size(), maxGroups, 0u, 0u), glm::vec4(time, 0.0f, 0.0f, 0.0f)};
+    const VkDescriptorSet set = motionSet_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, motionLayout_, 0, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, motionLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, motion_);
+    vkCmdDispatch(cmd, groupsFor(crowd_.size(), CULL_WORKGROUP_SIZE, maxGroups), 1, 1);
+    gpu::memoryBarrier(cmd, kComputeWrite, {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+}
+
+void AnimationPass::recordPalettes(VkCommandBuffer cmd) {
+    const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
+    const VkDescriptorSet set = paletteSet_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, paletteLayout_, 0, 1, &set, 0, nullptr);
+    // The previous frame's indirect reads of the dispatches, and its readers of the bones, come first.
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | kCharacterReaders, 0}, kComputeWrite);
+    const gpu::PalettePush sizes{glm::uvec4(lists_.bucketCount(), maxGroups, 0u, 0u)};
+    vkCmdPushConstants(cmd, paletteLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof sizes, &sizes);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, paletteDispatch_);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    gpu::memoryBarrier(cmd, kComputeWrite, {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, palette_);
+    const anim::ClipLibrary& library = crowd_.library();
+    for (std::uint32_t b = 0; b < lists_.bucketCount(); ++b) {
+        const std::uint32_t joints = library.jointCount(lists_.buckets()[b].list.x);
+        const gpu::PalettePush push{glm::uvec4(b, joints, std::max(1u, kPaletteThreads / joints), 0u)};
+        vkCmdPushConstants(cmd, paletteLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        vkCmdDispatchIndirect(cmd, dispatches_.buffer, b * sizeof(glm::uvec4));
+    }
+    gpu::memoryBarrier(cmd, kComputeWrite,
+                       {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
+}
+
+}  // namespace render
