@@ -4,7 +4,7 @@
 # Expects the Vulkan loader packages in .gl/ and prebuilt binaries plus their shared libraries in
 # .devbin/ (both carried with the call). Everything lands in $OUT/scenes.tgz (the device tool brings
 # back few files), with a summary on stdout. Two parts, each well inside one call's 10 minutes:
-# Usage: bench/run_scenes.sh scenes|stress|shadows [quick]
+# Usage: bench/run_scenes.sh scenes|stress|shadows|impostors|impostors-off [quick]
 set -uo pipefail
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
@@ -38,6 +38,22 @@ if [[ $part == shadows ]]; then
   bench fig4-no-shadows --scene paper-fig4 $hd --shadows off
   "$bin/crowd-render" --device NVIDIA --scene paper-fig4 --method compute --size 1920x1080 --frames 600 \
     --out "$res/paper-fig4-shadows.png" --json "$res/paper-fig4-shadows.json" >"$res/paper-fig4-shadows.txt" 2>&1
+elif [[ $part == impostors || $part == impostors-off ]]; then
+  # The impostor level (issue 11): stress at 1, 2 and 4 million soldiers from high over the crowd
+  # (t = 0 s) and from inside it (t = 20 s), compute skinning, one JSON per run; `impostors-off` is the
+  # same without them (the speed-up), with fewer frames since those frames take up to a second.
+  if [[ $part == impostors ]]; then flags="--impostors on"; else flags="--impostors off"; frames="--frames 10 --warmup 3"; fi
+  [[ "${2:-}" == quick ]] && frames="--frames 5 --warmup 2"
+  for count in 1000000 2000000 4000000; do
+    bench "stress-over-$count-$part" --scene stress $hd --methods compute --counts $count $flags
+    bench "stress-inside-$count-$part" --scene stress $hd --start 20 --methods compute --counts $count $flags
+  done
+  # Pictures for the image difference (the same frame with impostors on and off), 1,000,000 soldiers.
+  for start in 0 20; do
+    "$bin/crowd-render" --device NVIDIA --scene stress --count 1000000 --start $start --method compute \
+      --size 1920x1080 --frames 30 $flags --out "$res/stress-1m-t$start-$part.png" \
+      --json "$res/stress-1m-t$start-$part-render.json" >"$res/stress-1m-t$start-$part-render.txt" 2>&1
+  done
 elif [[ $part == scenes ]]; then
   bench fig3 --scene paper-fig3 $hd
   bench fig4 --scene paper-fig4 $hd

@@ -15,6 +15,14 @@ layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buck
 layout(std430, set = 0, binding = 4) buffer Frames { BucketFrame frames[]; };
 layout(std430, set = 0, binding = 5) writeonly buffer Visible { uint visible[]; };
 layout(std430, set = 0, binding = 6) buffer LodState { uint lodState[]; };
+layout(std430, set = 0, binding = 12) buffer Impostors { ImpostorFrame impostorFrame; };
+layout(std430, set = 0, binding = 13) writeonly buffer ImpostorList { uint impostors[]; };
+
+// Impostors cast no shadow (they are not drawn into the shadow map), so only those in view are kept.
+void appendImpostor(uint c, vec4 sphere) {
+    if (cull.flags.y != 0u && !sphereInFrustum(cull.planes, sphere)) return;
+    impostors[atomicAdd(impostorFrame.count, 1u)] = c;
+}
 
 void cullCharacter(uint c) {
     CharacterRecord character = characters[c];
@@ -26,7 +34,18 @@ void cullCharacter(uint c) {
     uint lod = 0u;
     if (cull.flags.z != 0u) lod = chooseLod(projectedDiameter(sphere, cull.camera), lodState[c], cull.lod);
     lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
+    if (lod == IMPOSTOR_LEVEL) {
+        appendImpostor(c, sphere);
+        return;
+    }
     if (!inView) return;
+    // The mesh levels hold at most limits.z characters (their skinned vertices are sized for that);
+    // the rest are drawn as impostors. Which ones is the order of the atomics: any, when over the cap.
+    if (cull.limits.z != 0u && atomicAdd(impostorFrame.meshCount, 1u) >= cull.limits.z) {
+        atomicAdd(impostorFrame.demoted, 1u);
+        appendImpostor(c, sphere);
+        return;
+    }
     uint bucket = character.ids.x * LOD_COUNT + lod;
     uint slot = atomicAdd(frames[bucket].count, 1u);
     visible[buckets[bucket].list.z + slot] = c;

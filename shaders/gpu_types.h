@@ -20,6 +20,9 @@ using uint = std::uint32_t;
 // Models one crowd may hold, and base-colour textures among them.
 #define MAX_MODELS 16
 #define MAX_TEXTURES 8
+// The impostor level: after the mesh levels 0..LOD_COUNT-1, a character is a camera-facing quad
+// textured from its model's atlas (render/impostor_atlas.h). lodState stores level + 1 as for the others.
+#define IMPOSTOR_LEVEL LOD_COUNT
 // Threads per workgroup of the cull, emit and skinning compute passes.
 #define CULL_WORKGROUP_SIZE 64
 
@@ -108,6 +111,32 @@ struct DrawTotals {
     uvec4 emitDispatch;   // indirect dispatch of the emit pass (x groups, y = z = 1)
 };
 
+// One model's impostors: where its cells are in the atlas and how they were captured. Cell of
+// (clip, frame, elevation, azimuth) = first + ((clip x frames + frame) x elevations + elevation) x
+// azimuths + azimuth (shaders/impostor_cell.glsl.inc).
+struct ImpostorModel {
+    uvec4 cells;  // x: first cell in the atlas, y: clips, z: frames per clip, w: unused
+    uvec4 views;  // x: azimuths, y: elevations, z: cells per atlas row, w: cells per atlas layer
+    vec4 square;  // model space: xyz centre of every cell's square (the pose sphere's), w: half its side
+};
+
+// The impostor level of a frame: culling counts its characters, finalize turns the count into one
+// instanced draw of a 6-index quad (the first five members are VkDrawIndexedIndirectCommand).
+struct ImpostorFrame {
+    uint indexCount;     // 6
+    uint instanceCount;  // count
+    uint firstIndex;
+    int vertexOffset;
+    uint firstInstance;
+    uint count;          // characters drawn as impostors (in view)
+    uint meshCount;      // characters culling sent to a mesh level (before the cap), visible or caster
+    uint demoted;        // of those, sent to the impostor level because the mesh levels were full
+    uint drawCount;      // 1: the draw is issued with vkCmdDrawIndexedIndirectCount (see render/impostor_draw.cpp)
+    uint unused0;
+    uint unused1;
+    uint unused2;
+};
+
 // ---- Animation on the GPU (anim/clip_library.h flattens the clips; render/animation_pass runs them) ----
 
 // Samples of a clip's root-motion curve per cycle (plus one: the curve's end, the stride).
@@ -177,11 +206,13 @@ struct CullUniforms {
                      // dot(n, centre) + w < -radius for some plane
     vec4 camera;     // xyz: eye, w: pixels per unit of size at unit distance (height / (2 tan(fovY / 2)))
     vec4 lod;        // x: LOD 0 threshold, y: LOD 1 threshold (projected sphere diameter in pixels),
-                     // z: hysteresis (fraction of a threshold), w: unused
+                     // z: hysteresis (fraction of a threshold), w: impostor threshold (below it, the
+                     // impostor level; 0: no impostors)
     uvec4 flags;     // x: characters, y: 1 = frustum culling, z: 1 = LOD selection (else all LOD 0),
                      // w: buckets
     uvec4 limits;    // x: most workgroups in a dispatch's x dimension, y: 1 = keep shadow casters,
-                     // z, w: unused
+                     // z: most characters at a mesh level (LOD 0-2) in a frame, the rest are demoted to
+                     // impostors (0: no cap), w: unused
     vec4 light;      // xyz: unit vector towards the light (shadow casters), w: unused
 };
 

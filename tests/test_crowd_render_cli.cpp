@@ -101,6 +101,11 @@ TEST(CrowdRenderCli, BadScenesAndLodSettingsAreRejected) {
     expectOneLineError("--lod-thresholds 50,150", "out of order");
     expectOneLineError("--lod-thresholds 100", "--lod-thresholds");
     expectOneLineError("--lod-thresholds 100,0", "out of order");
+    expectOneLineError("--impostors on --impostor-threshold 60", "not below the LOD 2 threshold");
+    expectOneLineError("--impostor-threshold 20 --lod-thresholds 100,15", "not below the LOD 2 threshold");
+    expectOneLineError("--impostor-threshold 0", "above 0");
+    expectOneLineError("--impostors maybe", "--impostors");
+    expectOneLineError("--mesh-capacity 0", "too small");
     expectOneLineError("--lod maybe", "--lod");
     expectOneLineError("--cull sometimes", "--cull");
     expectOneLineError("--lod-hysteresis 0.9", "--lod-hysteresis");

@@ -69,7 +69,7 @@ void printPassTable(const std::vector<BenchResult>& results) {
     std::printf("\nPer pass (GPU ms, median) and cost of skinning relative to the static ceiling\n");
     std::printf("%-14s %-16s %8s %9s %9s %7s %8s %8s %8s %8s %8s %8s %8s %8s %9s %9s %10s %22s %8s  %s\n", "model", "method",
                 "chars", "frame ms", "p95 ms", "/static", "upload", "motion", "cull", "palette", "skin", "copy", "shadow", "draw", "Gvert/s",
-                "cpu anim", "memory", "drawn at LOD 0/1/2", "M tris", "pass clock");
+                "cpu anim", "memory", "LOD 0/1/2/impostor", "M tris", "pass clock");
     for (const BenchResult& r : results) {
         if (!r.ok) {
             std::printf("%-14s %-16s %8u  skipped: %s\n", r.model.c_str(), r.method.c_str(), r.count, r.error.c_str());
@@ -77,8 +77,9 @@ void printPassTable(const std::vector<BenchResult>& results) {
         }
         const std::string lods = std::to_string(static_cast<long>(r.frame.medianVisible[0])) + "/" +
                                  std::to_string(static_cast<long>(r.frame.medianVisible[1])) + "/" +
-                                 std::to_string(static_cast<long>(r.frame.medianVisible[2]));
-        std::printf("%-14s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s %22s %8.2f  %s\n",
+                                 std::to_string(static_cast<long>(r.frame.medianVisible[2])) + "/" +
+                                 std::to_string(static_cast<long>(r.frame.medianImpostors));
+                std::printf("%-14s %-16s %8u %9.3f %9.3f %7.2f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %9.2f %9.3f %10s %22s %8.2f  %s\n",
                     r.model.c_str(), r.method.c_str(), r.count, r.frame.medianFrameMs, r.frame.p95FrameMs,
                     ratioToStatic(results, r), passMs(r, "upload"), passMs(r, "motion"), passMs(r, "cull"),
                     passMs(r, "palette"), passMs(r, "skin"),
@@ -147,6 +148,11 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["animation"] = r.frame.animation;
         row["median_visible_per_lod"] = {r.frame.medianVisible[0], r.frame.medianVisible[1], r.frame.medianVisible[2]};
         row["median_triangles"] = r.frame.medianTriangles;
+        row["median_impostors"] = r.frame.medianImpostors;
+        row["median_demoted_to_impostors"] = r.frame.medianDemoted;
+        row["memory_bytes_per_character"] = r.frame.memoryPerCharacter;
+        row["gpu_ms"] = r.frame.medianGpuMs;
+        if (r.frame.atlasBakeMs > 0.0) row["impostor_atlas_bake_ms"] = r.frame.atlasBakeMs;
         for (const skin::MemoryItem& item : r.frame.memory) row["memory_bytes"][item.what] = item.bytes;
         json["results"].push_back(row);
     }

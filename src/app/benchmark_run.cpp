@@ -15,8 +15,11 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     scene.count = options.count;
     scene.seed = options.seed;
     crowd::Crowd crowd = buildCrowd(models, scene);
-    checkCrowdFits(context, crowd, options.method, options.size);
+    const std::uint32_t meshCapacity = options.scene.cull.impostors ? options.scene.meshCapacity : 0u;
+    checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
     frame::RendererOptions rendererOptions;
+    rendererOptions.meshCapacity = meshCapacity;
+    rendererOptions.atlas = options.atlas;
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     rendererOptions.cull = options.scene.cull;
@@ -37,7 +40,8 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     RunSummary summary = summarize(renderer.stats(), options.warmup);
     summary.scene = scene.scene;
     summary.culling = std::string(render::cullModeName(options.scene.cull.mode)) + ", LOD " +
-                      (options.scene.cull.lod ? "on" : "off") + ", shadows " + (options.scene.shadows ? "on" : "off");
+                      (options.scene.cull.lod ? "on" : "off") + ", shadows " + (options.scene.shadows ? "on" : "off") +
+                      impostorSummary(options.scene);
     summary.animation = std::string(crowd::behaviourName(scene.behaviour)) + ", " +
                         render::animationPathName(options.scene.animation) + " animation";
     summary.model = modelNames(models);
@@ -46,6 +50,8 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     summary.device = context.description.name;
     summary.driver = context.description.driver;
     summary.memory = renderer.memory();
+    summary.memoryPerCharacter = renderer.memoryPerCharacter();
+    if (renderer.impostorAtlas()) summary.atlasBakeMs = renderer.impostorAtlas()->bakeMs();
     summary.passClock = gpu::passClockName(options.passClock);
     return summary;
 }

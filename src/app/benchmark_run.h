@@ -2,6 +2,7 @@
 // One benchmark measurement: a crowd rendered for warm-up plus measured frames with one method,
 // summarized into medians. Shared by crowd-bench and its tests.
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "app/crowd_app.h"
@@ -9,6 +10,7 @@
 #include "app/report.h"
 #include "gpu/gpu_timer.h"
 #include "model/skinned_model.h"
+#include "render/impostor_atlas.h"
 #include "skin/skinning_method.h"
 
 namespace gpu { class VulkanContext; }
@@ -25,6 +27,8 @@ struct ScenarioOptions {
     VkExtent2D size{1280, 720};
     std::uint32_t seed = 1;
     gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
+    // An impostor atlas baked before for these models (the bench reuses one across runs).
+    std::shared_ptr<const render::ImpostorAtlas> atlas;
 };
 
 // Renders the scene's crowd of these models (their default clip, seeded phases) along the scene's

@@ -18,6 +18,7 @@
 #include "render/crowd_buffers.h"
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
+#include "render/impostor_atlas.h"
 #include "skin/skin_target_layout.h"
 
 namespace app {
@@ -167,27 +168,40 @@ std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, 
 }
 
 std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
-                                 VkExtent2D size) {
-    // Every character at LOD 0 (a frame's worst case) and at every LOD (the static method's slots).
-    std::uint64_t skinnedCapacity = 0, fixedCapacity = 0;
+                                 VkExtent2D size, std::uint32_t meshCapacity) {
+    // Every character at LOD 0 (a frame's worst case; with a cap, the cap's characters at the largest
+    // LOD 0) and at every LOD (the static method's slots).
+    std::uint64_t skinnedCapacity = 0, fixedCapacity = 0, largestLod0 = 0;
     std::vector<std::vector<model::SkinnedModel::Lod>> lods;
     for (const model::SkinnedModel* m : crowd.models()) lods.push_back(render::lodsOf(*m));
     for (const crowd::Character& c : crowd.characters()) {
         skinnedCapacity += lods[c.model][0].vertexCount;
         for (const model::SkinnedModel::Lod& lod : lods[c.model]) fixedCapacity += lod.vertexCount;
     }
+    for (const auto& l : lods) largestLod0 = std::max<std::uint64_t>(largestLod0, l[0].vertexCount);
+    if (meshCapacity > 0 && meshCapacity < crowd.size())
+        skinnedCapacity = std::min(skinnedCapacity, largestLod0 * meshCapacity);
+    else
+        meshCapacity = 0;
+    std::uint64_t atlas = 0;
+    if (meshCapacity > 0) {
+        std::vector<gpu::ModelRecord> records(crowd.models().size());
+        atlas = render::planImpostors(crowd.models(), records, {}).bytes();
+    }
     const std::uint64_t characters = crowd.size();
     const std::uint64_t needed =
         render::planBones(context, crowd).bytes() + characters * sizeof(gpu::CharacterRecord) +
-        render::DrawLists::bytesFor(characters, static_cast<std::uint32_t>(crowd.models().size() * LOD_COUNT)) +
+        render::DrawLists::bytesFor(characters, static_cast<std::uint32_t>(crowd.models().size() * LOD_COUNT),
+                                    meshCapacity) + atlas +
         skin::estimateMethodBytes(method, characters, skinnedCapacity, fixedCapacity,
                                   skin::maxSkinTargetDimension(context, 0)) +
         static_cast<std::uint64_t>(size.width) * size.height * 8;
     return needed;
 }
 
-void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size) {
-    const std::uint64_t needed = estimateCrowdBytes(context, crowd, method, size);
+void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size,
+                    std::uint32_t meshCapacity) {
+    const std::uint64_t needed = estimateCrowdBytes(context, crowd, method, size, meshCapacity);
     const std::uint64_t available = context.deviceLocalBytes();
     if (needed > available)
         throw gpu::Error("--count " + std::to_string(crowd.size()) + ": " + skin::methodName(method) + " needs about " +

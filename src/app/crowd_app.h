@@ -60,10 +60,13 @@ std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, 
 crowd::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene);
 
 // Device memory the crowd needs with this method and image size (the sizes the allocations will have).
+// `meshCapacity` > 0: impostors are on and at most that many characters are drawn at a mesh level
+// (their skinned vertices and lists are sized for it; the impostor atlas is counted too).
 std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
-                                 VkExtent2D size);
+                                 VkExtent2D size, std::uint32_t meshCapacity = 0);
 // Throws a one-line gpu::Error when the crowd cannot fit in the device's memory for this method.
-void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size);
+void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size,
+                    std::uint32_t meshCapacity = 0);
 
 // Where the crowd stands, for camera paths.
 render::CrowdShape crowdShape(const crowd::Crowd& crowd);

@@ -32,6 +32,8 @@ usage: crowd-bench [options]
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
+  --impostors on|off   the impostor level for far characters (default off); with
+  --impostor-threshold PX  (default 32) and --mesh-capacity N (default 65536) as in crowd-render
   --start SECONDS      scene time of the first frame (where on the scene's camera path to measure)
   --models LIST        comma-separated models, each measured alone (default soldier,horse)
   --asset-root DIR     let glTF files' buffers and images come from anywhere inside DIR (default:
@@ -89,7 +91,7 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     BenchOptions o;
-    bool shadowsGiven = false, startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
+    bool impostorsGiven = false, shadowsGiven = false, startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
     for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& flag = args[i];
@@ -106,7 +108,12 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             const render::CullSettings keep = o.scene.cull;
             const float keepStart = o.scene.startSeconds;
             const bool keepShadows = o.scene.shadows;
+            const std::uint32_t keepCapacity = o.scene.meshCapacity;
             o.scene = app::parseRenderOptions({"--scene", preset.name});
+            if (impostorsGiven) {
+                o.scene.cull.impostors = keep.impostors, o.scene.cull.impostorThreshold = keep.impostorThreshold;
+                o.scene.meshCapacity = keepCapacity;
+            }
             if (lodGiven) o.scene.cull.lod = keep.lod;
             if (cullGiven) o.scene.cull.mode = keep.mode;
             if (startGiven) o.scene.startSeconds = keepStart;
@@ -117,6 +124,12 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         } else if (flag == "--shadows") {
             o.scene.shadows = app::parseRenderOptions({"--shadows", next()}).shadows;
             shadowsGiven = true;
+        } else if (flag == "--impostors" || flag == "--impostor-threshold" || flag == "--mesh-capacity") {
+            const app::RenderOptions parsed = app::parseRenderOptions({flag, next()});
+            if (flag == "--impostors") o.scene.cull.impostors = parsed.cull.impostors;
+            if (flag == "--impostor-threshold") o.scene.cull.impostorThreshold = parsed.cull.impostorThreshold;
+            if (flag == "--mesh-capacity") o.scene.meshCapacity = parsed.meshCapacity;
+            impostorsGiven = true;
         } else if (flag == "--start") {
             o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, 1e6f);
             startGiven = true;

@@ -97,9 +97,11 @@ int run(const app::RenderOptions& options) {
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     crowd::Crowd crowd = app::buildCrowd(models, options.scene);
-    app::checkCrowdFits(context, crowd, options.method, options.size);
+    const std::uint32_t meshCapacity = options.cull.impostors ? options.meshCapacity : 0u;
+    app::checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
 
     frame::RendererOptions rendererOptions;
+    rendererOptions.meshCapacity = meshCapacity;
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     rendererOptions.cull = options.cull;
@@ -122,7 +124,7 @@ int run(const app::RenderOptions& options) {
     summary.frames = options.frames;
     summary.scene = options.scene.scene;
     summary.culling = std::string(render::cullModeName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off") +
-                      ", shadows " + (options.shadows ? "on" : "off");
+                      ", shadows " + (options.shadows ? "on" : "off") + app::impostorSummary(options);
     summary.animation = std::string(crowd::behaviourName(options.scene.behaviour)) + ", " +
                         render::animationPathName(options.animation) + " animation";
     summary.model = app::modelNames(models);
@@ -131,6 +133,8 @@ int run(const app::RenderOptions& options) {
     summary.device = context.description.name;
     summary.driver = context.description.driver;
     summary.memory = renderer.memory();
+    summary.memoryPerCharacter = renderer.memoryPerCharacter();
+    if (renderer.impostorAtlas()) summary.atlasBakeMs = renderer.impostorAtlas()->bakeMs();
     app::printSummary(summary);
     std::printf("  wrote %s\n", options.out.c_str());
     if (!options.json.empty()) app::writeJson(options.json, summary);

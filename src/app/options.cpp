@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "app/scene_presets.h"
 
@@ -36,6 +37,12 @@ usage: crowd-render [options]
                           no culling (default gpu)
   --lod-thresholds A,B    LOD 0 while a character's pose sphere is at least A pixels across, LOD 1
                           while at least B, else LOD 2 (default 150,50)
+  --impostors on|off      the impostor level: characters whose pose sphere is under the impostor
+                          threshold are drawn as camera-facing quads from an atlas baked at load time
+                          (default off)
+  --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
+  --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame, the rest are
+                          drawn as impostors; sizes the skinned-vertex buffers (default 65536)
   --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
   --start SECONDS         scene time of the first frame: where on the camera path (and in the clips)
                           the run begins (default 0)
@@ -96,6 +103,12 @@ float parseNumber(const std::string& flag, const std::string& text, float min, f
 }
 
 namespace {
+
+std::string formatPixels(float pixels) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", pixels);
+    return text;
+}
 
 bool parseOnOff(const std::string& flag, const std::string& text) {
     if (text == "on") return true;
@@ -169,6 +182,12 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--lod") options.cull.lod = parseOnOff(flag, next());
         else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
         else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
+        else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
+        else if (flag == "--impostor-threshold") {
+            options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);
+            if (!(options.cull.impostorThreshold > 0.0f)) throw gpu::Error(flag + ": the threshold must be above 0 pixels");
+        }
+        else if (flag == "--mesh-capacity") options.meshCapacity = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--start") options.startSeconds = parseNumber(flag, next(), 0.0f, 1e6f);
         else if (flag == "--lod-hysteresis") options.cull.hysteresis = parseNumber(flag, next(), 0.0f, 0.5f);
         else if (flag == "--cull") {
@@ -204,6 +223,11 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         // --validation=no must not turn validation on.
         if (hasInlineValue && !valueTaken) throw gpu::Error(flag + " takes no value (got '" + flag + "=" + value + "')");
     }
+    // Checked once every flag is known: --lod-thresholds may come after it.
+    if (!(options.cull.impostorThreshold < options.cull.lodThresholds[1]))
+        throw gpu::Error("--impostor-threshold: " + formatPixels(options.cull.impostorThreshold) +
+                         " px is not below the LOD 2 threshold of " + formatPixels(options.cull.lodThresholds[1]) +
+                         " px (--lod-thresholds A,B needs B > impostor threshold > 0)");
     return options;
 }
 

@@ -26,7 +26,7 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
     summary.frames = static_cast<std::uint32_t>(stats.size());
     // Never leave every frame out: a short run still reports its last frames.
     const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
-    std::vector<double> intervals, plan, animate, record, total, triangles, skinned;
+    std::vector<double> intervals, plan, animate, record, total, triangles, skinned, impostors, demoted;
     std::vector<double> visible[LOD_COUNT];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
@@ -41,7 +41,11 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
         for (int l = 0; l < LOD_COUNT; ++l) visible[l].push_back(frame.lods.characters[l]);
         triangles.push_back(static_cast<double>(frame.lods.totalTriangles()));
         skinned.push_back(static_cast<double>(frame.lods.skinnedVertices));
+        impostors.push_back(frame.lods.impostors);
+        demoted.push_back(frame.lods.demoted);
     }
+    summary.medianImpostors = median(impostors);
+    summary.medianDemoted = median(demoted);
     for (int l = 0; l < LOD_COUNT; ++l) summary.medianVisible[l] = median(visible[l]);
     summary.medianTriangles = median(triangles);
     summary.medianSkinnedVertices = median(skinned);
@@ -81,11 +85,27 @@ std::vector<frame::FrameStats> RecentFrames::frames() const {
     return ordered;
 }
 
+std::string impostorSummary(const RenderOptions& options) {
+    if (!options.cull.impostors) return ", impostors off";
+    char text[96];
+    std::snprintf(text, sizeof text, ", impostors below %g px (mesh capacity %u)", options.cull.impostorThreshold,
+                  options.meshCapacity);
+    return text;
+}
+
 void printSummary(const RunSummary& s) {
     std::printf("%s: %s x %u, %s, %u frames (%u measured) on %s (%s)\n", s.scene.c_str(), s.model.c_str(),
                 s.characters, s.method.c_str(), s.frames, s.measuredFrames, s.device.c_str(), s.driver.c_str());
-    std::printf("  drawn: %.0f / %.0f / %.0f characters at LOD 0 / 1 / 2, %.2f M triangles  [culling %s]\n",
-                s.medianVisible[0], s.medianVisible[1], s.medianVisible[2], s.medianTriangles / 1e6, s.culling.c_str());
+    std::printf("  drawn: %.0f / %.0f / %.0f characters at LOD 0 / 1 / 2, %.0f impostors (%.0f over the mesh cap), "
+                "%.2f M triangles  [culling %s]\n",
+                s.medianVisible[0], s.medianVisible[1], s.medianVisible[2], s.medianImpostors, s.medianDemoted,
+                s.medianTriangles / 1e6, s.culling.c_str());
+    if (s.atlasBakeMs > 0.0) std::printf("  impostor atlas baked in %.0f ms\n", s.atlasBakeMs);
+    if (!s.memoryPerCharacter.empty()) {
+        std::printf("  device bytes per character:");
+        for (const auto& [what, bytes] : s.memoryPerCharacter) std::printf(" %s %.0f,", what.c_str(), bytes);
+        std::printf("\n");
+    }
     std::printf("  frame: median %.3f ms (%.1f fps), p95 %.3f ms  [%s]\n", s.medianFrameMs, s.fps, s.p95FrameMs,
                 s.frameClock.c_str());
     std::printf("  cpu:   plan %.3f ms, animate %.3f ms, record+submit %.3f ms  [%s]\n", s.medianPlanMs, s.medianAnimateMs,
@@ -103,6 +123,10 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["animation"] = s.animation;
     json["median_visible_per_lod"] = {s.medianVisible[0], s.medianVisible[1], s.medianVisible[2]};
     json["median_triangles"] = s.medianTriangles;
+    json["median_impostors"] = s.medianImpostors;
+    json["median_demoted_to_impostors"] = s.medianDemoted;
+    json["memory_bytes_per_character"] = s.memoryPerCharacter;
+    if (s.atlasBakeMs > 0.0) json["impostor_atlas_bake_ms"] = s.atlasBakeMs;
     json["method"] = s.method;
     json["characters"] = s.characters;
     json["frames"] = s.frames;

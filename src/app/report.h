@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/options.h"
 #include "frame/crowd_renderer.h"
 #include "skin/skinning_method.h"
 
@@ -22,6 +23,8 @@ struct RunSummary {
     double medianVisible[LOD_COUNT] = {};
     double medianTriangles = 0.0;
     double medianSkinnedVertices = 0.0;  // visible characters x their LOD's vertices
+    double medianImpostors = 0.0;        // characters drawn at the impostor level
+    double medianDemoted = 0.0;          // of those, over the mesh-level cap
     std::uint32_t frames = 0;
     std::uint32_t measuredFrames = 0;
     double medianFrameMs = 0.0;   // see frameClock
@@ -39,7 +42,13 @@ struct RunSummary {
     std::string device;
     std::string driver;
     std::vector<skin::MemoryItem> memory;
+    // Device bytes per character of the crowd, by kind (frame::CrowdRenderer::memoryPerCharacter).
+    std::map<std::string, double> memoryPerCharacter;
+    double atlasBakeMs = 0.0;  // 0: no impostor atlas
 };
+
+// ", impostors off" or ", impostors below 32 px (mesh capacity 65536)": for the summary's culling line.
+std::string impostorSummary(const RenderOptions& options);
 
 double median(std::vector<double> values);
 double percentile(std::vector<double> values, double fraction);

@@ -43,7 +43,7 @@ float projectedDiameter(const glm::vec4& sphere, const glm::vec4& camera) {
 }
 
 std::uint32_t lodForSize(float size, const glm::vec4& lod, float scale) {
-    return (size < lod.x * scale ? 1u : 0u) + (size < lod.y * scale ? 1u : 0u);
+    return (size < lod.x * scale ? 1u : 0u) + (size < lod.y * scale ? 1u : 0u) + (size < lod.w * scale ? 1u : 0u);
 }
 
 std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod) {
@@ -54,8 +54,13 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
 }
 
 VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::CharacterRecord> characters,
-                       std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState) {
+                       std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState,
+                       std::vector<std::uint32_t>* impostors) {
     VisibleLists lists(models.size() * LOD_COUNT);
+    std::uint32_t meshCount = 0;
+    auto appendImpostor = [&](std::uint32_t c, const glm::vec4& sphere) {
+        if (impostors && (cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere))) impostors->push_back(c);
+    };
     for (std::uint32_t c = 0; c < characters.size(); ++c) {
         const gpu::CharacterRecord& character = characters[c];
         const glm::vec4 sphere = worldSphere(character, models[character.ids.x]);
@@ -65,7 +70,17 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
         std::uint32_t lod = 0;
         if (cull.flags.z != 0u) lod = chooseLod(projectedDiameter(sphere, cull.camera), lodState[c], cull.lod);
         lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
-        if (visible) lists[character.ids.x * LOD_COUNT + lod].push_back(c);
+        if (lod == IMPOSTOR_LEVEL) {
+            appendImpostor(c, sphere);
+            continue;
+        }
+        if (!visible) continue;
+        // The cap in character order (the GPU's order is its atomics').
+        if (cull.limits.z != 0u && meshCount++ >= cull.limits.z) {
+            appendImpostor(c, sphere);
+            continue;
+        }
+        lists[character.ids.x * LOD_COUNT + lod].push_back(c);
     }
     return lists;
 }

@@ -1,7 +1,10 @@
 #include "frame/crowd_renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 
+#include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -16,6 +19,12 @@ double nowMs() {
 
 float aspectOf(VkExtent2D extent) { return static_cast<float>(extent.width) / static_cast<float>(extent.height); }
 
+// The cap applies only when impostors are there from the start to take the characters beyond it.
+std::uint32_t meshCapacityOf(const RendererOptions& options, const crowd::Crowd& crowd) {
+    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
+                                                                                                    : 0u;
+}
+
 }  // namespace
 
 CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& crowd,
@@ -24,7 +33,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& cr
       crowd_(crowd),
       pool_(context, crowd.models()),
       buffers_(context, crowd, options.framesInFlight),
-      lists_(context, pool_, buffers_, options.framesInFlight),
+      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityOf(options, crowd)),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
       target_(std::make_unique<render::RenderTarget>(context, options.size)),
@@ -35,6 +44,8 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& cr
       draw_(context, pool_, buffers_, lists_, scene_.setLayout()),
       timer_(context, options.framesInFlight, options.passClock),
       method_(createMethod(options.method)),
+      impostorSettings_(options.impostorSettings),
+      atlas_(options.atlas),
       cull_(options.cull),
       animation_(options.animation),
       shadows_(options.shadows),
@@ -49,6 +60,7 @@ CrowdRenderer::CrowdRenderer(const gpu::VulkanContext& context, crowd::Crowd& cr
         VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         VK_CHECK(vkCreateFence(context.device, &fenceInfo, nullptr, &frame.fence));
     }
+    if (cull_.impostors) enableImpostors();
 }
 
 CrowdRenderer::~CrowdRenderer() {
@@ -135,6 +147,7 @@ gpu::CullUniforms CrowdRenderer::cullUniforms() const {
     // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too.
     uniforms.limits.y = shadows_ ? 1u : 0u;
     uniforms.light = glm::vec4(render::lightDirection(), 0.0f);
+    uniforms.limits.z = lists_.meshCapacity();
     return uniforms;
 }
 
@@ -176,7 +189,29 @@ void CrowdRenderer::recordScene(VkCommandBuffer cmd, std::uint32_t slot, const g
                                  glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
     scene_.recordGround(cmd, slot, push);
     draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push);
+    // Far characters (and those over the mesh-level cap): after the meshes, depth-tested against them.
+    if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push);
     target_->endRendering(cmd);
+}
+
+void CrowdRenderer::setCull(const render::CullSettings& cull) {
+    cull_ = cull;
+    if (cull_.impostors) enableImpostors();
+}
+
+void CrowdRenderer::enableImpostors() {
+    if (impostorDraw_) return;
+    finish();
+    VK_CHECK(vkDeviceWaitIdle(context_.device));
+    if (!atlas_) {
+        // The bake reads the palette and textures through a scene set: slot 0's, idle now.
+        scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), pool_.palette(), pool_.texturedMaterials(), 0.0f));
+        atlas_ = std::make_shared<render::ImpostorAtlas>(context_, pool_, crowd_.models(), scene_.setLayout(),
+                                                         scene_.set(0), impostorSettings_);
+    } else if (atlas_->models().size() != pool_.modelCount()) {
+        throw gpu::Error("impostors: the atlas given was baked for other models");
+    }
+    impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout());
 }
 
 void CrowdRenderer::submit(Frame& frame, const PresentHooks* hooks) {
@@ -248,8 +283,23 @@ std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"render target", target_->bytes()},
                                            {"shadow map", shadowMap_.bytes()}};
+    if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
+}
+
+std::map<std::string, double> CrowdRenderer::memoryPerCharacter() const {
+    const double n = std::max(crowd_.size(), 1u);
+    const double state = static_cast<double>(buffers_.characters().size + lists_.lodState().size +
+                                             lists_.impostorList().size + lists_.characterDraws().size);
+    double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
+    for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
+    const double fixed = static_cast<double>(pool_.bytes() + target_->bytes() + shadowMap_.bytes());
+    return {{"state", state / n},
+            {"bones", static_cast<double>(buffers_.bones().size) / n},
+            {"mesh slots", meshSlots / n},
+            {"atlas", atlas_ ? static_cast<double>(atlas_->bytes()) / n : 0.0},
+            {"fixed", fixed / n}};
 }
 
 }  // namespace frame

@@ -6,6 +6,8 @@
 // Headless: it renders into an offscreen target; a presenter adds its commands through PresentHooks.
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <string>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -22,6 +24,8 @@
 #include "render/cull_pass.h"
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
+#include "render/impostor_atlas.h"
+#include "render/impostor_draw.h"
 #include "render/render_target.h"
 #include "render/shadow_map.h"
 #include "render/scene_pass.h"
@@ -41,6 +45,13 @@ struct RendererOptions {
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     gpu::PassClock passClock = gpu::PassClock::TimestampQueries;
+    // With impostors on at construction (cull.impostors), the most characters drawn at a mesh level
+    // (LOD 0-2) in a frame: skinned vertices, visible lists and draws are sized for it, and culling
+    // demotes the characters beyond it to impostors. 0, or a crowd no larger: no cap.
+    std::uint32_t meshCapacity = 0;
+    render::ImpostorSettings impostorSettings;
+    // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
+    std::shared_ptr<const render::ImpostorAtlas> atlas;
 };
 
 struct FrameStats {
@@ -76,8 +87,9 @@ public:
     void resize(VkExtent2D size);
     // Switches the skinning method (waits for the GPU).
     void setMethod(skin::Method method);
-    // Culling and LOD settings of the next frames (takes effect at once).
-    void setCull(const render::CullSettings& cull) { cull_ = cull; }
+    // Culling and LOD settings of the next frames (takes effect at once; the first switch to impostors
+    // bakes the atlas, waiting for the GPU).
+    void setCull(const render::CullSettings& cull);
     const render::CullSettings& cull() const { return cull_; }
     void setShadows(bool on) { shadows_ = on; }
     // Where the bone matrices come from, from the next frame on.
@@ -97,6 +109,8 @@ public:
     const render::CrowdBuffers& buffers() const { return buffers_; }
     const render::DrawLists& drawLists() const { return lists_; }
     const render::CullPass& cullPass() const { return cullPass_; }
+    // The impostor atlas, once impostors have been on (null before).
+    std::shared_ptr<const render::ImpostorAtlas> impostorAtlas() const { return atlas_; }
     VkExtent2D extent() const { return target_->extent(); }
     // Where the crowd stands (measured once: it loops over every character).
     const render::CrowdShape& shape() const { return shape_; }
@@ -104,6 +118,11 @@ public:
     gpu::CullUniforms cullUniforms() const;
     // Device memory of the crowd's buffers, the method's resources and the render target.
     std::vector<skin::MemoryItem> memory() const;
+    // The same per character of the crowd, by kind: "state" (record, LOD state, impostor-list entry,
+    // the vs baseline's draw slot), "bones" (its bone block), "mesh slots" (visible lists, draws and
+    // the method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas
+    // shared by all), "fixed" (geometry, render target, shadow map).
+    std::map<std::string, double> memoryPerCharacter() const;
 
 private:
     struct Frame {
@@ -118,6 +137,7 @@ private:
     // The path this frame takes: none when the method no longer reads bones; the CPU for the fixed
     // layout's one frame (it needs every character's bones, not only the visible ones).
     std::optional<render::AnimationPath> animationThisFrame() const;
+    void enableImpostors();
     void recordCulling(VkCommandBuffer cmd, std::uint32_t slot);
     void recordShadows(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
     void recordScene(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& lightViewProjection);
@@ -140,6 +160,9 @@ private:
     render::CharacterDraw draw_;
     gpu::GpuTimer timer_;
     std::unique_ptr<skin::SkinningMethod> method_;
+    render::ImpostorSettings impostorSettings_;
+    std::shared_ptr<const render::ImpostorAtlas> atlas_;
+    std::unique_ptr<render::ImpostorDraw> impostorDraw_;
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;

@@ -23,6 +23,11 @@ static_assert(offsetof(DrawIndexedCommand, vertexOffset) == offsetof(VkDrawIndex
 static_assert(offsetof(DrawIndexedCommand, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
 // emitDispatch is read by vkCmdDispatchIndirect: 16-byte aligned after four uints.
 static_assert(sizeof(DrawTotals) == 32 && offsetof(DrawTotals, emitDispatch) == 16);
+static_assert(sizeof(ImpostorModel) == 48 && offsetof(ImpostorModel, views) == 16 && offsetof(ImpostorModel, square) == 32);
+// The first five members are what vkCmdDrawIndexedIndirect reads.
+static_assert(sizeof(ImpostorFrame) == 48 && offsetof(ImpostorFrame, drawCount) == 32 &&
+              offsetof(ImpostorFrame, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance) &&
+              offsetof(ImpostorFrame, count) == sizeof(VkDrawIndexedIndirectCommand));
 static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160);
 static_assert(sizeof(SkinPassParams) == 32);

@@ -126,7 +126,7 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
             const VkDeviceSize offsets[2] = {0, vertices.normalsOffset};
             vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
             vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, 0, lists_.totals().buffer,
-                                          offsetof(gpu::DrawTotals, drawCount), lists_.characterCount(), stride);
+                                          offsetof(gpu::DrawTotals, drawCount), lists_.drawCapacity(), stride);
             break;
         }
         case DrawInput::BindPoseInstanced:

@@ -37,7 +37,8 @@ gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4
     const std::array<glm::vec4, 6> planes = crowd::frustumPlanes(viewProjection);
     std::copy(planes.begin(), planes.end(), u.planes);
     u.camera = glm::vec4(eye, static_cast<float>(viewportHeight) / (2.0f * std::tan(0.5f * verticalFov)));
-    u.lod = glm::vec4(settings.lodThresholds[0], settings.lodThresholds[1], settings.hysteresis, 0.0f);
+    u.lod = glm::vec4(settings.lodThresholds[0], settings.lodThresholds[1], settings.hysteresis,
+                      settings.lod && settings.impostors ? settings.impostorThreshold : 0.0f);
     u.flags = glm::uvec4(characters, settings.mode != CullMode::Off ? 1u : 0u, settings.lod ? 1u : 0u, buckets);
     u.limits = glm::uvec4(maxGroups, 0u, 0u, 0u);
     return u;
@@ -76,7 +77,8 @@ CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, 
             {storage, lists.visible().buffer},           {storage, lists.lodState().buffer},
             {storage, lists.totals().buffer},            {storage, lists.bucketDraws().buffer},
             {storage, lists.skinDispatches().buffer},    {storage, lists.draws().buffer},
-            {storage, lists.characterDraws().buffer}};
+            {storage, lists.characterDraws().buffer},    {storage, lists.impostorFrame().buffer},
+            {storage, lists.impostorList().buffer}};
         descriptors_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
         const VkDescriptorSetLayout setLayout = descriptors_->layout();
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(EmitPush)};
@@ -114,6 +116,7 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     // The previous frame's skinning, draws and readback must be done with the lists before they are rewritten.
     gpu::memoryBarrier(cmd, {kConsumers, 0}, {kTransferWrite.stage | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0});
     vkCmdFillBuffer(cmd, lists_.bucketFrames().buffer, 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, lists_.impostorFrame().buffer, 0, VK_WHOLE_SIZE, 0);
     if (characterDraws) vkCmdFillBuffer(cmd, lists_.characterDraws().buffer, 0, VK_WHOLE_SIZE, 0);
     if (mode == CullMode::Cpu) recordCpuCulling(cmd, frameSlot, uniforms);
     gpu::memoryBarrier(cmd, kTransferWrite, kComputeWrite);
@@ -142,11 +145,15 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     // The counts go to the host for statistics (read once this frame's fence has signalled).
     const VkBufferCopy counts{0, 0, lists_.bucketFrames().size};
     vkCmdCopyBuffer(cmd, lists_.bucketFrames().buffer, lists_.readback(frameSlot).buffer, 1, &counts);
+    const VkBufferCopy impostors{0, lists_.bucketFrames().size, sizeof(gpu::ImpostorFrame)};
+    vkCmdCopyBuffer(cmd, lists_.impostorFrame().buffer, lists_.readback(frameSlot).buffer, 1, &impostors);
 }
 
 void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms) {
     cpuLodState_.resize(lists_.characterCount(), 0u);
-    const crowd::VisibleLists visible = crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_);
+    std::vector<std::uint32_t> impostorList;
+    const crowd::VisibleLists visible =
+        crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_, &impostorList);
     const gpu::Buffer& staging = lists_.cpuStaging(frameSlot);
     auto* frames = static_cast<gpu::BucketFrame*>(staging.mapped);
     auto* list = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(staging.mapped) + lists_.bucketFrames().size);
@@ -160,6 +167,19 @@ void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, co
     vkCmdCopyBuffer(cmd, staging.buffer, lists_.bucketFrames().buffer, 1, &countsRegion);
     const VkBufferCopy listRegion{lists_.bucketFrames().size, 0, lists_.visible().size};
     vkCmdCopyBuffer(cmd, staging.buffer, lists_.visible().buffer, 1, &listRegion);
+    // The impostor level: its count (finalize writes the draw from it) and its list.
+    const VkDeviceSize impostorBase = lists_.bucketFrames().size + lists_.visible().size;
+    gpu::ImpostorFrame impostors{};
+    impostors.count = static_cast<std::uint32_t>(impostorList.size());
+    std::byte* base = static_cast<std::byte*>(staging.mapped) + impostorBase;
+    std::memcpy(base, &impostors, sizeof impostors);
+    std::copy(impostorList.begin(), impostorList.end(), reinterpret_cast<std::uint32_t*>(base + sizeof impostors));
+    const VkBufferCopy impostorRegion{impostorBase, 0, sizeof impostors};
+    vkCmdCopyBuffer(cmd, staging.buffer, lists_.impostorFrame().buffer, 1, &impostorRegion);
+    if (!impostorList.empty()) {
+        const VkBufferCopy impostorListRegion{impostorBase + sizeof impostors, 0, impostorList.size() * 4};
+        vkCmdCopyBuffer(cmd, staging.buffer, lists_.impostorList().buffer, 1, &impostorListRegion);
+    }
 }
 
 }  // namespace render

@@ -36,6 +36,10 @@ struct CullSettings {
     float lodThresholds[2] = {150.0f, 50.0f};
     // A character keeps its level until its size passes a threshold by this fraction of it.
     float hysteresis = 0.1f;
+    // The impostor level (with LOD on): below impostorThreshold pixels a character is drawn as an
+    // impostor (render/impostor_atlas.h). Must be below lodThresholds[1].
+    bool impostors = false;
+    float impostorThreshold = 32.0f;
 };
 
 // The cull pass's uniforms for a camera: frustum planes from the view-projection, the eye, and the

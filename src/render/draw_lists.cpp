@@ -21,46 +21,59 @@ std::uint32_t skinningCharactersPerGroup(const gpu::VulkanContext& context, std:
 namespace {
 
 // Buckets in model-major order (model x LOD_COUNT + lod), each listing up to all its model's characters.
+// With a cap, a bucket never lists more than the cap, and a frame never skins more than the cap's
+// characters at the largest LOD 0 of the crowd.
 std::vector<gpu::BucketRecord> planBuckets(const gpu::VulkanContext& context, const GeometryPool& pool,
-                                           const CrowdBuffers& crowd, std::uint64_t& skinnedCapacity,
-                                           std::uint64_t& fixedCapacity) {
+                                           const CrowdBuffers& crowd, std::uint32_t meshCapacity,
+                                           std::uint64_t& skinnedCapacity, std::uint64_t& fixedCapacity) {
     std::vector<std::uint32_t> members(pool.modelCount(), 0);
     for (const gpu::CharacterRecord& c : crowd.records()) ++members[c.ids.x];
     std::vector<gpu::BucketRecord> buckets;
     std::uint32_t listBase = 0;
+    std::uint32_t largestLod0 = 0;
     skinnedCapacity = fixedCapacity = 0;
     for (std::uint32_t m = 0; m < pool.modelCount(); ++m) {
         const gpu::ModelRecord& model = pool.models()[m];
         const std::uint32_t perGroup = skinningCharactersPerGroup(context, model.info.y);
         skinnedCapacity += static_cast<std::uint64_t>(members[m]) * model.lodVertexCount[0];
+        largestLod0 = std::max(largestLod0, model.lodVertexCount[0]);
+        const std::uint32_t listed = meshCapacity > 0 ? std::min(members[m], meshCapacity) : members[m];
         for (std::uint32_t l = 0; l < LOD_COUNT; ++l) {
             gpu::BucketRecord b{};
-            b.list = glm::uvec4(m, l, listBase, members[m]);
+            b.list = glm::uvec4(m, l, listBase, listed);
             b.mesh = glm::uvec4(model.lodFirstIndex[l], model.lodIndexCount[l], model.lodVertexCount[l], model.info.x);
             b.fixedLayout = glm::uvec4(static_cast<std::uint32_t>(std::min<std::uint64_t>(fixedCapacity, UINT32_MAX)),
                                        perGroup, 0u, 0u);
             fixedCapacity += static_cast<std::uint64_t>(members[m]) * model.lodVertexCount[l];
-            listBase += members[m];
+            listBase += listed;
             buckets.push_back(b);
         }
     }
+    if (meshCapacity > 0) skinnedCapacity = std::min<std::uint64_t>(skinnedCapacity, std::uint64_t{meshCapacity} * largestLod0);
     return buckets;
 }
 
 }  // namespace
 
-std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets) {
-    // visible lists (one entry per character and LOD), two draw commands and the LOD state per character
-    return characters * (LOD_COUNT * 4 + 2 * sizeof(gpu::DrawIndexedCommand) + 4) +
+std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity) {
+    // Per character: the baseline's draw command, the LOD state and the impostor list entry; per
+    // mesh-level character (all, without a cap): visible-list entries (one per LOD) and a draw command.
+    const std::uint64_t meshLevel = meshCapacity > 0 ? std::min<std::uint64_t>(characters, meshCapacity) : characters;
+    return characters * (sizeof(gpu::DrawIndexedCommand) + 4 + 4) +
+           meshLevel * (LOD_COUNT * 4 + sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
            buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + sizeof(gpu::DrawIndexedCommand) + 16);
 }
 
 DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-                     std::uint32_t framesInFlight)
+                     std::uint32_t framesInFlight, std::uint32_t meshCapacity)
     : context_(context),
-      buckets_(planBuckets(context, pool, crowd, skinnedCapacity_, fixedCapacity_)),
-      characterCount_(crowd.characterCount()) {
+      buckets_(planBuckets(context, pool, crowd, meshCapacity, skinnedCapacity_, fixedCapacity_)),
+      characterCount_(crowd.characterCount()),
+      meshCapacity_(meshCapacity),
+      drawCapacity_(meshCapacity > 0 ? std::min(meshCapacity, characterCount_) : characterCount_) {
     const VkDeviceSize n = std::max(characterCount_, 1u);
+    VkDeviceSize listed = 0;
+    for (const gpu::BucketRecord& bucket : buckets_) listed += bucket.list.w;
     const VkDeviceSize b = buckets_.size();
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     constexpr VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -72,17 +85,22 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
         bucketFrames_ = gpu::createBuffer(context, b * sizeof(gpu::BucketFrame),
                                           filled | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, device, "bucket counts");
         totals_ = gpu::createBuffer(context, sizeof(gpu::DrawTotals), indirect, device, "draw totals");
-        visible_ = gpu::createBuffer(context, n * LOD_COUNT * 4, filled, device, "visible lists");
-        draws_ = gpu::createBuffer(context, n * sizeof(gpu::DrawIndexedCommand), indirect, device, "draw commands");
+        visible_ = gpu::createBuffer(context, std::max<VkDeviceSize>(listed, 1) * 4, filled, device, "visible lists");
+        draws_ = gpu::createBuffer(context, std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect, device,
+                                   "draw commands");
         characterDraws_ = gpu::createBuffer(context, n * sizeof(gpu::DrawIndexedCommand), indirect | filled, device,
                                             "per-character draw commands");
         bucketDraws_ = gpu::createBuffer(context, b * sizeof(gpu::DrawIndexedCommand), indirect, device,
                                          "per-bucket draw commands");
         skinDispatches_ = gpu::createBuffer(context, b * sizeof(glm::uvec4), indirect, device, "skinning dispatches");
         lodState_ = gpu::createBuffer(context, n * 4, filled, device, "LOD state");
+        impostorFrame_ = gpu::createBuffer(context, sizeof(gpu::ImpostorFrame), indirect | filled, device, "impostor draw");
+        impostorList_ = gpu::createBuffer(context, n * 4, filled, device, "impostor list");
         gpu::runOneShot(context, [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, lodState_.buffer, 0, VK_WHOLE_SIZE, 0); });
         for (std::uint32_t i = 0; i < framesInFlight; ++i) {
-            readback_.push_back(gpu::createBuffer(context, b * sizeof(gpu::BucketFrame), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+            // The bucket counts, then the impostor level's figures.
+            readback_.push_back(gpu::createBuffer(context, b * sizeof(gpu::BucketFrame) + sizeof(gpu::ImpostorFrame),
+                                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                                   gpu::MemoryUse::HostReadback, "bucket counts (readback)"));
             std::memset(readback_.back().mapped, 0, readback_.back().size);
         }
@@ -98,7 +116,7 @@ DrawLists::~DrawLists() { release(); }
 void DrawLists::release() {
     for (gpu::Buffer& buffer : cpuStaging_) gpu::destroyBuffer(context_, buffer);
     for (gpu::Buffer& buffer : readback_) gpu::destroyBuffer(context_, buffer);
-    for (gpu::Buffer* buffer : {&lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_,
+    for (gpu::Buffer* buffer : {&impostorList_, &impostorFrame_, &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_,
                                 &totals_, &bucketFrames_, &bucketRecords_})
         gpu::destroyBuffer(context_, *buffer);
 }
@@ -107,7 +125,8 @@ const gpu::Buffer& DrawLists::cpuStaging(std::uint32_t frameSlot) {
     // Made on first use: only the CPU path needs it (bucket counts, then the lists).
     gpu::Buffer& staging = cpuStaging_[frameSlot];
     if (!staging.buffer)
-        staging = gpu::createBuffer(context_, bucketFrames_.size + visible_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+        staging = gpu::createBuffer(context_, bucketFrames_.size + visible_.size + impostorFrame_.size + impostorList_.size,
+                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                     gpu::MemoryUse::HostUpload, "visible lists (CPU culling upload)");
     return staging;
 }
@@ -121,12 +140,16 @@ LodCounts DrawLists::countsOf(std::uint32_t frameSlot) const {
         counts.triangles[lod] += static_cast<std::uint64_t>(frames[b].count) * (buckets_[b].mesh.y / 3);
         counts.skinnedVertices += static_cast<std::uint64_t>(frames[b].count) * buckets_[b].mesh.z;
     }
+    gpu::ImpostorFrame impostors;
+    std::memcpy(&impostors, frames + buckets_.size(), sizeof impostors);
+    counts.impostors = impostors.count;
+    counts.demoted = impostors.demoted;
     return counts;
 }
 
 VkDeviceSize DrawLists::bytes() const {
     VkDeviceSize total = 0;
-    for (const gpu::Buffer* buffer : {&lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_,
+    for (const gpu::Buffer* buffer : {&impostorList_, &impostorFrame_, &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_,
                                       &visible_, &totals_, &bucketFrames_, &bucketRecords_})
         total += buffer->size;
     return total;

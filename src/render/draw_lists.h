@@ -33,20 +33,25 @@ struct LodCounts {
     std::uint32_t characters[LOD_COUNT] = {};
     std::uint64_t triangles[LOD_COUNT] = {};
     std::uint64_t skinnedVertices = 0;  // what a skinning pass skins: visible characters x their LOD's vertices
+    std::uint32_t impostors = 0;  // characters drawn at the impostor level
+    std::uint32_t demoted = 0;    // of those, sent there because the mesh levels were full (the cap)
     std::uint32_t visible() const { return characters[0] + characters[1] + characters[2]; }
     std::uint64_t totalTriangles() const { return triangles[0] + triangles[1] + triangles[2]; }
 };
 
 class DrawLists {
 public:
+    // `meshCapacity`: the most characters at a mesh level (LOD 0-2) in a frame, 0 for no cap. With a
+    // cap, the skinned-vertex capacity, the draw list and each bucket's list are sized for it, not for
+    // the whole crowd; culling demotes the characters beyond it to impostors.
     DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-              std::uint32_t framesInFlight);
+              std::uint32_t framesInFlight, std::uint32_t meshCapacity = 0);
     ~DrawLists();
     DrawLists(const DrawLists&) = delete;
     DrawLists& operator=(const DrawLists&) = delete;
 
     // Device bytes these lists take for a crowd of this size and bucket count (checked before allocating).
-    static std::uint64_t bytesFor(std::uint64_t characters, std::uint32_t buckets);
+    static std::uint64_t bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity = 0);
 
     std::uint32_t bucketCount() const { return static_cast<std::uint32_t>(buckets_.size()); }
     const std::vector<gpu::BucketRecord>& buckets() const { return buckets_; }
@@ -64,6 +69,12 @@ public:
     const gpu::Buffer& bucketDraws() const { return bucketDraws_; }
     const gpu::Buffer& skinDispatches() const { return skinDispatches_; }
     const gpu::Buffer& lodState() const { return lodState_; }
+    // The impostor level: its count and draw command (gpu::ImpostorFrame), and its list of characters.
+    const gpu::Buffer& impostorFrame() const { return impostorFrame_; }
+    const gpu::Buffer& impostorList() const { return impostorList_; }
+    // The most mesh-level characters a frame draws: the draw list's length.
+    std::uint32_t drawCapacity() const { return drawCapacity_; }
+    std::uint32_t meshCapacity() const { return meshCapacity_; }
     const gpu::Buffer& readback(std::uint32_t frameSlot) const { return readback_[frameSlot]; }
     // Where the CPU path writes a frame's counts and lists before they are copied to the GPU.
     const gpu::Buffer& cpuStaging(std::uint32_t frameSlot);
@@ -79,9 +90,10 @@ private:
     const gpu::VulkanContext& context_;
     std::vector<gpu::BucketRecord> buckets_;
     std::uint32_t characterCount_;
+    std::uint32_t meshCapacity_, drawCapacity_;
     std::uint64_t skinnedCapacity_, fixedCapacity_;  // set by planBuckets, before this line runs
     gpu::Buffer bucketRecords_, bucketFrames_, totals_, visible_, draws_, characterDraws_, bucketDraws_,
-        skinDispatches_, lodState_;
+        skinDispatches_, lodState_, impostorFrame_, impostorList_;
     std::vector<gpu::Buffer> readback_;
     std::vector<gpu::Buffer> cpuStaging_;
 };

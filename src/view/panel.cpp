@@ -64,6 +64,8 @@ void Panel::drawStats(const PanelState& state) {
     for (int l = 0; l < LOD_COUNT; ++l)
         ImGui::Text("  LOD %d: %s characters, %s triangles", l, thousands(state.lods.characters[l]).c_str(),
                     thousands(state.lods.triangles[l]).c_str());
+    ImGui::Text("  impostors: %s characters (%s over the mesh cap)", thousands(state.lods.impostors).c_str(),
+                thousands(state.lods.demoted).c_str());
 
     const std::vector<float> times = history.frameMs();
     const float longest = times.empty() ? 1.0f : *std::max_element(times.begin(), times.end());
@@ -121,8 +123,16 @@ void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
     cull.mode = static_cast<render::CullMode>(mode);
     float thresholds[2] = {cull.lodThresholds[0], cull.lodThresholds[1]};
     if (ImGui::DragFloat2("LOD px", thresholds, 1.0f, 1.0f, 2000.0f, "%.0f") && thresholds[0] > thresholds[1] &&
-        thresholds[1] > 0.0f) {
+        thresholds[1] > (cull.impostors ? cull.impostorThreshold : 0.0f)) {
         cull.lodThresholds[0] = thresholds[0], cull.lodThresholds[1] = thresholds[1];
+        changed = true;
+    }
+    // The first switch to impostors bakes the atlas (a second or so; the frame waits).
+    changed |= ImGui::Checkbox("impostors", &cull.impostors);
+    float impostorPx = cull.impostorThreshold;
+    if (ImGui::DragFloat("impostor px", &impostorPx, 0.5f, 1.0f, 2000.0f, "%.0f") && impostorPx > 0.0f &&
+        impostorPx < cull.lodThresholds[1]) {
+        cull.impostorThreshold = impostorPx;
         changed = true;
     }
     if (changed) requests.cull = cull;

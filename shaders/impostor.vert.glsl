@@ -1,0 +1,49 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The impostor level: one instance per character of the impostor list, a quad of six indices facing the eye
+// (spherical billboard over the model's pose sphere, turned by the character's heading) that shows
+// the atlas cell of its clip, phase and view direction. No bones, no skinned vertices: only the record.
+#include "gpu_types.h"
+#include "impostor_set.glsl.inc"
+#include "impostor_pose.glsl.inc"
+#include "impostor_cell.glsl.inc"
+
+layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
+layout(push_constant) uniform Push { vec4 cameraPosition; };
+
+layout(location = 0) out vec2 vUv;
+layout(location = 1) flat out uint vLayer;
+layout(location = 2) flat out vec3 vTint;
+layout(location = 3) flat out vec2 vHeading;  // cos, sin
+layout(location = 4) out vec3 vWorld;
+
+// Model frame to world: the heading's turn about +y (as worldSphere and characterTransform turn it).
+vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.z - s * v.x); }
+
+void main() {
+    const vec2 corners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
+    CharacterRecord character = characters[impostors[gl_InstanceIndex]];
+    ImpostorModel m = impostorModels[character.ids.x];
+    vec2 corner = corners[gl_VertexIndex];
+
+    float c = cos(character.placement.w);
+    float s = sin(character.placement.w);
+    float scale = character.tint.w;
+    vec3 centre = character.placement.xyz + turn(m.square.xyz * scale, c, s);
+    vec3 towards = normalize(cameraPosition.xyz - centre);
+    vec3 towardsModel = vec3(c * towards.x - s * towards.z, towards.y, c * towards.z + s * towards.x);
+    ImpostorPose pose = impostorPose(character);
+    uint cell = impostorCell(m, pose.clip, pose.phase, towardsModel);
+    vec3 right, up;
+    impostorBasis(towardsModel, right, up);
+
+    vec3 world = centre + m.square.w * scale * (corner.x * turn(right, c, s) + corner.y * turn(up, c, s));
+    gl_Position = scene.viewProjection * vec4(world, 1.0);
+    uint inLayer = cell % m.views.w;
+    vec2 cellOrigin = vec2(inLayer % m.views.z, inLayer / m.views.z);
+    vUv = (cellOrigin + vec2(0.5 + 0.5 * corner.x, 0.5 - 0.5 * corner.y)) / float(m.views.z);
+    vLayer = cell / m.views.w;
+    vTint = character.tint.rgb;
+    vHeading = vec2(c, s);
+    vWorld = world;
+}

@@ -1,0 +1,95 @@
+#pragma once
+// The impostor atlas: every model of a crowd, skinned by the engine in every clip at `framesPerClip`
+// phases and seen from azimuths x elevations over the upper hemisphere (render/impostor_cell.h),
+// rendered into cells of two RGBA8 texture arrays: albedo (sRGB; palette x base-colour texture,
+// untinted) and the model-space normal, each with coverage in alpha and a mip chain down to 8-texel
+// cells. Baked once at load time on the GPU (one command buffer, one draw per cell), bounded in
+// memory by ImpostorSettings::budgetPerModel.
+//
+// A cell shows the square, in the view's image plane, that holds the model's pose sphere: so every
+// pose of every clip fits, and an impostor is a quad over the character's pose sphere.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/buffer.h"
+#include "gpu_types.h"
+#include "model/skinned_model.h"
+#include "render/geometry_pool.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+struct ImpostorSettings {
+    std::uint32_t azimuths = 16;
+    std::uint32_t elevations = 4;
+    std::uint32_t framesPerClip = 16;   // halved (down to 4), then cells shrunk, until a model fits the budget
+    std::uint32_t cellSize = 64;        // texels per side of a cell
+    std::uint64_t budgetPerModel = 256ull << 20;  // bytes of both arrays, mips included
+};
+
+// The cells, frames and cell size the atlas will have for these models: what the constructor bakes
+// and the memory check counts (bytes of both arrays with their mips).
+struct ImpostorPlan {
+    std::vector<gpu::ImpostorModel> models;
+    std::uint32_t cellSize = 0;
+    std::uint32_t mipLevels = 0;
+    std::uint32_t cellsPerRow = 0;
+    std::uint32_t layers = 0;
+    std::uint64_t bytes() const;
+    std::uint64_t bytesOf(std::uint32_t model) const;  // the model's share (its cells)
+};
+ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, std::span<const gpu::ModelRecord> records,
+                           const ImpostorSettings& settings);
+
+class ImpostorAtlas {
+public:
+    // Bakes the atlas (waits for the GPU). `sceneSet` (layout `sceneSetLayout`) must hold the pool's
+    // palette and textures; only the bake reads it. Throws gpu::Error when the atlas cannot be allocated.
+    ImpostorAtlas(const gpu::VulkanContext& context, const GeometryPool& pool,
+                  std::span<const model::SkinnedModel* const> models, VkDescriptorSetLayout sceneSetLayout,
+                  VkDescriptorSet sceneSet, const ImpostorSettings& settings = {});
+    ~ImpostorAtlas();
+    ImpostorAtlas(const ImpostorAtlas&) = delete;
+    ImpostorAtlas& operator=(const ImpostorAtlas&) = delete;
+
+    const ImpostorPlan& plan() const { return plan_; }
+    const std::vector<gpu::ImpostorModel>& models() const { return plan_.models; }
+    const gpu::Buffer& modelTable() const { return modelTable_; }
+    // Set 2 of the impostor draw: binding 0 the albedo array, 1 the normal array (fragment stage).
+    VkDescriptorSetLayout setLayout() const { return setLayout_; }
+    VkDescriptorSet set() const { return set_; }
+    VkDeviceSize bytes() const;
+    double bakeMs() const { return bakeMs_; }
+
+private:
+    struct Layer;
+    void createImages();
+    void createSamplingSet();
+    void bake(const GeometryPool& pool, std::span<const model::SkinnedModel* const> models,
+              VkDescriptorSetLayout sceneSetLayout, VkDescriptorSet sceneSet);
+    void release();
+
+    const gpu::VulkanContext& context_;
+    ImpostorPlan plan_;
+    VkImage images_[2] = {};
+    VkDeviceMemory memory_[2] = {};
+    VkDeviceSize imageBytes_[2] = {};
+    VkImageView arrayViews_[2] = {};
+    VkSampler sampler_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    gpu::Buffer modelTable_;
+    double bakeMs_ = 0.0;
+};
+
+// The bone matrices of every pose the atlas captures, model after model, clip after clip, frame after
+// frame (identity placement: the model's own space); `firstBone[m]` is where model m's poses begin.
+std::vector<gpu::BoneRows> impostorPoses(std::span<const model::SkinnedModel* const> models,
+                                         std::span<const gpu::ImpostorModel> plan, std::vector<std::uint32_t>& firstBone);
+
+}  // namespace render

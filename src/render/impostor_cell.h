@@ -1,0 +1,33 @@
+#pragma once
+// Which atlas cell an impostor shows and the view each cell was captured from: the C++ twin of
+// shaders/impostor_cell.glsl.inc, used by the bake (capture directions) and by the tests (the cell
+// the GPU must pick).
+//
+// Views cover the upper hemisphere: azimuth about +y, measured from +z towards +x, in `azimuths`
+// equal steps from 0 (the nearest is shown); elevation above the horizon in `elevations` equal bands
+// of 90 / elevations degrees, captured at each band's middle (the band holding the direction is
+// shown). Frame k of a clip is captured at phase k / frames, the nearest frame is shown (phases
+// wrap). Cell = first + ((clip x frames + frame) x elevations + elevation) x azimuths + azimuth.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "gpu_types.h"
+
+namespace render {
+
+// Azimuth (radians, [0, 2 pi)) and elevation (radians, [0, pi / 2]) of a unit direction.
+glm::vec2 impostorAngles(const glm::vec3& towardsCamera);
+
+// The cell for a clip, a phase in cycles ([0, 1)) and the unit direction from the character towards
+// the eye in the model's own frame.
+std::uint32_t impostorCell(const gpu::ImpostorModel& model, std::uint32_t clip, float phase,
+                           const glm::vec3& towardsCamera);
+
+// The direction (towards the viewer) cell view (azimuth index, elevation index) was captured from.
+glm::vec3 impostorViewDirection(const gpu::ImpostorModel& model, std::uint32_t azimuth, std::uint32_t elevation);
+
+// The image plane of a view: right horizontal (from the azimuth), up completing the frame.
+void impostorBasis(const glm::vec3& towardsCamera, glm::vec3& right, glm::vec3& up);
+
+}  // namespace render
