@@ -184,7 +184,9 @@ struct MotionRecord {
                   // w: how long the turn lasts (s)
     vec4 phase;   // x: normalized phase at the start (cycles), y: cycles per second of the clip faded
                   // from, z: of the clip faded to, w: 1 = root motion carries the character, 0 = in place
-    uvec4 clips;  // x: clip faded from, y: clip faded to (the model's own clip indices), z, w: unused
+    uvec4 clips;  // x: clip faded from, y: clip faded to (the model's own clip indices), zw: the float
+                  // bits of the world (x, z) displacement where the turn and the crossfade end (the
+                  // curved part, integrated once when the segment is planned: crowd::sealSegment)
 };
 
 // Push constants of the palette passes. palette.comp: x: bucket, y: joints of its model, z:

@@ -70,7 +70,7 @@ glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s) {
     float cosTheta = glm::dot(a, b);
     if (cosTheta < 0.0f) b = -b, cosTheta = -cosTheta;
     glm::vec4 q;
-    if (cosTheta > 1.0f - std::numeric_limits<float>::epsilon()) {
+    if (cosTheta > kNlerpAbove) {
         q = glm::mix(a, b, s);
     } else {
         const float angle = std::acos(cosTheta);

@@ -27,8 +27,11 @@ struct SamplingJob {
     void run() const;
 };
 
-// Spherical interpolation of unit quaternions (x, y, z, w) along the shorter arc, normalized; the
-// same steps as glm::slerp, repeated in shaders/animation.glsl.inc.
+// Spherical interpolation of unit quaternions (x, y, z, w) along the shorter arc, normalized, as
+// shaders/animation.glsl.inc repeats it. Keys closer than 11.5 degrees of rotation (the quaternions'
+// dot product above kNlerpAbove), as in densely keyed clips, take the normalized lerp instead: within
+// 1.5e-4 rad of the arc there, and no inverse cosine and two sines for every joint of every character.
+inline constexpr float kNlerpAbove = 0.995f;
 glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s);
 
 }  // namespace anim

@@ -11,6 +11,7 @@
 #include "app/benchmark_run.h"
 #include "app/crowd_app.h"
 #include "app/options.h"
+#include "app/palette_bench.h"
 #include "app/scene_presets.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -46,6 +47,9 @@ usage: crowd-bench [options]
   --pass-clock CLOCK   auto, timestamps or fence (default auto: fence on lavapipe, whose timestamps
                        do not bracket compute work, timestamps elsewhere)
   --quick              1 and 16 characters, 5 frames, 2 warm-up, 320x180: under a minute on lavapipe
+  --palette            instead: bone-palette time of a milling, crossfading crowd of the first model on
+                       the CPU (one thread, every thread) and on the GPU, for --counts (default
+                       1024,4096,16384,65536,262144,1000000; 10 frames, 3 warm-up unless given)
   --csv FILE           every figure as CSV
   --json FILE          every figure as JSON
   --device INDEX|NAME  Vulkan device (see crowd-render --list-devices)
@@ -74,7 +78,8 @@ struct BenchOptions {
     std::uint32_t frames = 60, warmup = 10, seed = 1;
     VkExtent2D size{1280, 720};
     std::string passClock = "auto", csv, json, device, assetRoot;
-    bool validation = false, help = false;
+    bool validation = false, help = false, palette = false;
+    bool countsGiven = false, framesGiven = false;
 };
 
 // "a,b,c"; an empty item ("1,,2", a trailing comma) is an error, not skipped.
@@ -103,6 +108,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         if (flag == "--help" || flag == "-h") o.help = true;
         else if (flag == "--validation") o.validation = true;
         else if (flag == "--quick") o.counts = {1, 16}, o.frames = 5, o.warmup = 2, o.size = {320, 180};
+        else if (flag == "--palette") o.palette = true;
         else if (flag == "--scene") {
             const app::ScenePreset& preset = app::findScenePreset(next());
             const render::CullSettings keep = o.scene.cull;
@@ -146,8 +152,8 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             countsGiven = true;
             o.counts.clear();
             for (const std::string& c : splitList(flag, next())) o.counts.push_back(app::parseCount(flag, c, 1, app::kMaxCharacters));
-        } else if (flag == "--frames") o.frames = app::parseCount(flag, next(), 1, 100000);
-        else if (flag == "--warmup") o.warmup = app::parseCount(flag, next(), 0, 100000);
+        } else if (flag == "--frames") o.frames = app::parseCount(flag, next(), 1, 100000), o.framesGiven = true;
+        else if (flag == "--warmup") o.warmup = app::parseCount(flag, next(), 0, 100000), o.framesGiven = true;
         else if (flag == "--size") o.size = app::parseSize(flag, next());
         else if (flag == "--pass-clock") o.passClock = next();
         else if (flag == "--csv") o.csv = next();
@@ -157,6 +163,9 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         else throw gpu::Error("unknown option '" + flag + "' (see --help)");
     }
     (void)sceneGiven;
+    o.countsGiven = countsGiven;
+    if (o.palette && !countsGiven) o.counts = {1024, 4096, 16384, 65536, 262144, 1000000};
+    if (o.palette && !o.framesGiven) o.frames = 10, o.warmup = 3;
     skin::Method method;
     for (const std::string& m : o.methods)
         if (!skin::parseMethod(m, method)) throw gpu::Error("--methods: unknown method '" + m + "'");
@@ -206,6 +215,31 @@ app::BenchResult measure(const gpu::VulkanContext& context, const app::CrowdMode
     return result;
 }
 
+int validationStatus(const gpu::VulkanContext& context) {
+    if (context.validationMessages() == 0) return 0;
+    std::fprintf(stderr, "crowd-bench: %llu validation message(s)\n",
+                 static_cast<unsigned long long>(context.validationMessages()));
+    return 3;
+}
+
+int runPalettes(const gpu::VulkanContext& context, const app::CrowdModels& models, const BenchOptions& options,
+                const std::string& command, bool fencePasses) {
+    app::PaletteBenchOptions palette;
+    palette.counts = options.counts;
+    palette.frames = options.frames;
+    palette.warmup = options.warmup;
+    palette.seed = options.seed;
+    palette.clock = fencePasses ? gpu::PassClock::FenceWallClock : gpu::PassClock::TimestampQueries;
+    const std::vector<app::PaletteRow> rows = app::runPaletteBench(context, models, palette);
+    std::printf("crowd-bench --palette: %s, driver %s, commit %s, %s\n", context.description.name.c_str(),
+                context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
+    app::printPaletteTable(rows, app::modelNames(models));
+    const app::BenchMeta meta{context.description.name, context.description.driver, CROWD_COMMIT, utcDate(), command,
+                              options.frames, options.warmup, 64, 64};
+    if (!options.json.empty()) app::writePaletteJson(options.json, meta, app::modelNames(models), rows);
+    return validationStatus(context);
+}
+
 int run(const BenchOptions& options, const std::string& command) {
     if (!options.csv.empty()) io::checkWritable(options.csv);
     if (!options.json.empty()) io::checkWritable(options.json);
@@ -218,6 +252,8 @@ int run(const BenchOptions& options, const std::string& command) {
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
     std::fprintf(stderr, "crowd-bench on %s (%s); per-pass clock: %s\n", context.description.name.c_str(),
                  context.description.driver.c_str(), fencePasses ? "fence wall clock" : "timestamp queries");
+
+    if (options.palette) return runPalettes(context, crowds.front(), options, command, fencePasses);
 
     std::vector<app::BenchResult> results;
     std::vector<std::string> modelNames;  // as the models name themselves (a file's model is not its path)

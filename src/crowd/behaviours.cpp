@@ -162,7 +162,9 @@ float headingTowards(const glm::vec2& from, const glm::vec2& target, std::uint32
     return std::atan2(way.x, way.y) - std::atan2(stride.x, stride.y);
 }
 
-float timeToCover(const gpu::MotionRecord& segment, float distance, const PlanContext& context) {
+float timeToCover(const gpu::MotionRecord& planned, float distance, const PlanContext& context) {
+    gpu::MotionRecord segment = planned;  // still being planned: sealed here to be evaluated
+    sealSegment(segment, context.library, context.model);
     const glm::vec2 origin(segment.origin.x, segment.origin.z);
     auto reached = [&](float elapsed) {
         const MotionState s = evaluateMotion(segment, segment.timing.x + elapsed, context.library, context.model);

@@ -136,6 +136,7 @@ void Crowd::addCharacter(const Character& c) {
                                                    duration > 0.0f ? c.timeOffset / duration : 0.0f, c.speed);
     agents_.emplace_back();
     segments_.push_back(startBehaviour(agents_.back(), first, planContext(index)));
+    sealSegment(segments_.back(), library_, c.model);
     changed_.push_back(1u);
     lastChanged_.push_back(index);
     ++generation_;
@@ -157,6 +158,7 @@ void Crowd::replan(std::uint32_t character, float time) {
     Agent& agent = agents_[character];
     while (agent.due <= time) {
         segments_[character] = planNext(agent, segments_[character], planContext(character));
+        sealSegment(segments_[character], library_, characters_[character].model);
         changed_[character] = 1u;
     }
 }

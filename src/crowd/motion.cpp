@@ -1,6 +1,7 @@
 #include "crowd/motion.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace crowd {
@@ -31,17 +32,17 @@ glm::vec2 turnToWorld(glm::vec2 m, float heading) {
 
 namespace {
 
-// Displacement along the segment's path from its start to `elapsed`, in world space (x, z).
-glm::vec2 travelled(const gpu::MotionRecord& segment, float elapsed, const anim::ClipLibrary& library,
-                    std::uint32_t model) {
+glm::vec2 rootStep(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip, float a, float b) {
+    return library.rootMotion(model, clip, b) - library.rootMotion(model, clip, a);
+}
+
+// Displacement along the segment's curved part (turning, crossfading) from its start to `curved`
+// seconds: the midpoint rule over MOTION_QUADRATURE_STEPS steps, each step's root motion exact for
+// its phases, only its direction and blend weight taken at its middle.
+glm::vec2 travelledCurving(const gpu::MotionRecord& segment, float curved, const anim::ClipLibrary& library,
+                           std::uint32_t model) {
     const std::uint32_t from = segment.clips.x, to = segment.clips.y;
-    auto rootStep = [&](std::uint32_t clip, float a, float b) {
-        return library.rootMotion(model, clip, b) - library.rootMotion(model, clip, a);
-    };
-    // While turning or crossfading, the midpoint rule over MOTION_QUADRATURE_STEPS steps: each step's
-    // root motion is exact for its phases, only its direction and blend weight are taken at its middle.
-    const float window = std::max(segment.timing.y, segment.timing.w);
-    const float curved = std::min(elapsed, window);
+    auto rootStep = [&](std::uint32_t clip, float a, float b) { return crowd::rootStep(library, model, clip, a, b); };
     glm::vec2 offset(0.0f);
     if (curved > 0.0f) {
         const float h = curved / static_cast<float>(MOTION_QUADRATURE_STEPS);
@@ -55,14 +56,32 @@ glm::vec2 travelled(const gpu::MotionRecord& segment, float elapsed, const anim:
             phaseA = phaseB;
         }
     }
-    // After both, a straight line along the to-clip's root motion: exact however long the segment.
-    if (elapsed > window)
-        offset += turnToWorld(rootStep(to, motionPhase(segment, window), motionPhase(segment, elapsed)),
-                              motionHeading(segment, window));
     return offset;
 }
 
+float windowOf(const gpu::MotionRecord& segment) { return std::max(segment.timing.y, segment.timing.w); }
+
+// Displacement along the segment's path from its start to `elapsed`, in world space (x, z): the curved
+// part while in it, then where it ended (sealed) plus a straight line along the to-clip's root
+// motion, exact however long the segment.
+glm::vec2 travelled(const gpu::MotionRecord& segment, float elapsed, const anim::ClipLibrary& library,
+                    std::uint32_t model) {
+    const float window = windowOf(segment);
+    if (elapsed <= window) return travelledCurving(segment, elapsed, library, model);
+    const glm::vec2 curvedEnd(std::bit_cast<float>(segment.clips.z), std::bit_cast<float>(segment.clips.w));
+    return curvedEnd + turnToWorld(rootStep(library, model, segment.clips.y, motionPhase(segment, window),
+                                            motionPhase(segment, elapsed)),
+                                   motionHeading(segment, window));
+}
+
 }  // namespace
+
+void sealSegment(gpu::MotionRecord& segment, const anim::ClipLibrary& library, std::uint32_t model) {
+    const glm::vec2 end = segment.phase.w != 0.0f ? travelledCurving(segment, windowOf(segment), library, model)
+                                                  : glm::vec2(0.0f);
+    segment.clips.z = std::bit_cast<std::uint32_t>(end.x);
+    segment.clips.w = std::bit_cast<std::uint32_t>(end.y);
+}
 
 MotionState evaluateMotion(const gpu::MotionRecord& segment, float time, const anim::ClipLibrary& library,
                            std::uint32_t model) {

@@ -33,6 +33,11 @@ struct MotionState {
 MotionState evaluateMotion(const gpu::MotionRecord& segment, float time, const anim::ClipLibrary& library,
                            std::uint32_t model);
 
+// Integrates the segment's curved part (its turn and crossfade, by quadrature) once and stores where it
+// ends in the segment, so evaluating it later costs a few operations instead of the quadrature. Every
+// planned segment is sealed before anyone evaluates it.
+void sealSegment(gpu::MotionRecord& segment, const anim::ClipLibrary& library, std::uint32_t model);
+
 // The normalized phase `elapsed` seconds into a segment, and the crossfade weight then.
 float motionPhase(const gpu::MotionRecord& segment, float elapsed);
 float motionWeight(const gpu::MotionRecord& segment, float elapsed);

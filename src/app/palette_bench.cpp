@@ -1,0 +1,142 @@
+#include "app/palette_bench.h"
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "app/report.h"
+#include "crowd/worker_pool.h"
+#include "frame/crowd_renderer.h"
+#include "gpu/vulkan_error.h"
+#include "io/output_file.h"
+
+namespace app {
+namespace {
+
+crowd::Crowd millingCrowd(const CrowdModels& models, std::uint32_t count, std::uint32_t seed) {
+    SceneOptions scene;
+    scene.count = count;
+    scene.seed = seed;
+    scene.behaviour = crowd::Behaviour::Mill;
+    return buildCrowd(models, scene);
+}
+
+// Median wall-clock milliseconds of `runs` CPU animations of the whole crowd on `pool`.
+double cpuPaletteMs(const crowd::Crowd& crowd, float time, crowd::WorkerPool& pool, std::uint32_t runs) {
+    std::vector<std::uint32_t> offsets(crowd.size());
+    std::uint64_t rows = 0;
+    for (std::uint32_t c = 0; c < crowd.size(); ++c) offsets[c] = static_cast<std::uint32_t>(rows), rows += crowd.library().jointCount(crowd.characters()[c].model);
+    std::vector<gpu::BoneRows> bones(rows);
+    crowd.animate(time, bones, offsets, {}, &pool);  // warm: key cursors and per-thread scratch
+    std::vector<double> ms;
+    for (std::uint32_t r = 0; r < runs; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        crowd.animate(time + 0.01f * static_cast<float>(r + 1), bones, offsets, {}, &pool);
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    return median(ms);
+}
+
+// The GPU passes with every character in view at LOD 0 (no culling, no LOD), so each gets a palette.
+// vs-instanced skins while drawing and needs no skinned buffer; a 64x64 image keeps the draw small.
+void gpuPaletteMs(const gpu::VulkanContext& context, crowd::Crowd& crowd, const PaletteBenchOptions& options,
+                  PaletteRow& row) {
+    frame::RendererOptions renderer;
+    renderer.size = {64, 64};
+    renderer.method = skin::Method::VertexShaderInstanced;
+    renderer.cull.mode = render::CullMode::Off;
+    renderer.cull.lod = false;
+    renderer.shadows = false;
+    renderer.animation = render::AnimationPath::Gpu;
+    renderer.passClock = options.clock;
+    frame::CrowdRenderer frames(context, crowd, renderer);
+    const std::uint32_t total = options.warmup + options.frames;
+    for (std::uint32_t f = 0; f < total; ++f) frames.renderFrame(options.time + static_cast<float>(f) / 60.0f);
+    frames.finish();
+    const RunSummary summary = summarize(frames.stats(), options.warmup);
+    row.gpuPaletteMs = summary.medianGpuMs.count("palette") ? summary.medianGpuMs.at("palette") : 0.0;
+    row.gpuMotionMs = summary.medianGpuMs.count("motion") ? summary.medianGpuMs.at("motion") : 0.0;
+    row.gpuClock = summary.passClock;
+}
+
+double jointsPerSecond(std::uint64_t joints, double ms) { return ms > 0.0 ? static_cast<double>(joints) / (ms * 1e-3) : 0.0; }
+
+}  // namespace
+
+std::vector<PaletteRow> runPaletteBench(const gpu::VulkanContext& context, const CrowdModels& models,
+                                        const PaletteBenchOptions& options) {
+    crowd::WorkerPool oneThread(1);
+    std::vector<PaletteRow> rows;
+    for (std::uint32_t count : options.counts) {
+        std::fprintf(stderr, "palettes: %u characters\n", count);
+        PaletteRow row;
+        row.characters = count;
+        row.threads = std::max(1u, std::thread::hardware_concurrency());
+        try {
+            crowd::Crowd crowd = millingCrowd(models, count, options.seed);
+            crowd.advanceTo(options.time);
+            for (const crowd::Character& c : crowd.characters()) row.joints += crowd.library().jointCount(c.model);
+            row.cpuOneThreadMs = cpuPaletteMs(crowd, options.time, oneThread, options.cpuRuns);
+            row.cpuAllThreadsMs = cpuPaletteMs(crowd, options.time, crowd::WorkerPool::shared(), options.cpuRuns);
+            gpuPaletteMs(context, crowd, options, row);
+        } catch (const gpu::Error& error) {
+            row.error = error.what();
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+void printPaletteTable(const std::vector<PaletteRow>& rows, const std::string& model) {
+    std::printf("\nBone palettes of a milling, crossfading crowd (%s): ms per frame and M joints/s\n", model.c_str());
+    std::printf("%10s %12s %12s %10s %12s %10s %12s %10s %10s\n", "characters", "joints", "cpu 1 thr", "Mj/s",
+                "cpu all", "Mj/s", "gpu palette", "Mj/s", "gpu motion");
+    for (const PaletteRow& r : rows) {
+        if (!r.error.empty()) {
+            std::printf("%10u  skipped: %s\n", r.characters, r.error.c_str());
+            continue;
+        }
+        std::printf("%10u %12llu %12.3f %10.1f %12.3f %10.1f %12.3f %10.1f %10.3f\n", r.characters,
+                    static_cast<unsigned long long>(r.joints), r.cpuOneThreadMs, jointsPerSecond(r.joints, r.cpuOneThreadMs) * 1e-6,
+                    r.cpuAllThreadsMs, jointsPerSecond(r.joints, r.cpuAllThreadsMs) * 1e-6, r.gpuPaletteMs,
+                    jointsPerSecond(r.joints, r.gpuPaletteMs) * 1e-6, r.gpuMotionMs);
+    }
+}
+
+void writePaletteJson(const std::string& path, const BenchMeta& meta, const std::string& model,
+                      const std::vector<PaletteRow>& rows) {
+    nlohmann::json json;
+    json["device"] = meta.device;
+    json["driver"] = meta.driver;
+    json["commit"] = meta.commit;
+    json["date"] = meta.date;
+    json["command"] = meta.command;
+    json["model"] = model;
+    json["crowd"] = "mill behaviour: standing, walking, running, crossfading";
+    json["cpu_clock"] = "wall clock, median of runs after a warm-up run";
+    json["palettes"] = nlohmann::json::array();
+    for (const PaletteRow& r : rows) {
+        nlohmann::json row;
+        row["characters"] = r.characters;
+        row["joints"] = r.joints;
+        if (!r.error.empty()) {
+            row["error"] = r.error;
+        } else {
+            row["cpu_threads"] = r.threads;
+            row["cpu_1_thread_palette_ms"] = r.cpuOneThreadMs;
+            row["cpu_1_thread_joints_per_s"] = jointsPerSecond(r.joints, r.cpuOneThreadMs);
+            row["cpu_all_threads_palette_ms"] = r.cpuAllThreadsMs;
+            row["cpu_all_threads_joints_per_s"] = jointsPerSecond(r.joints, r.cpuAllThreadsMs);
+            row["gpu_palette_ms"] = r.gpuPaletteMs;
+            row["gpu_palette_joints_per_s"] = jointsPerSecond(r.joints, r.gpuPaletteMs);
+            row["gpu_motion_ms"] = r.gpuMotionMs;
+            row["gpu_clock"] = r.gpuClock;
+        }
+        json["palettes"].push_back(row);
+    }
+    io::writeFile(path, json.dump(2) + "\n");
+}
+
+}  // namespace app
