@@ -4,7 +4,7 @@
 # Expects the Vulkan loader packages in .gl/ and prebuilt binaries plus their shared libraries in
 # .devbin/ (both carried with the call). Everything lands in $OUT/scenes.tgz (the device tool brings
 # back few files), with a summary on stdout. Two parts, each well inside one call's 10 minutes:
-# Usage: bench/run_scenes.sh scenes|stress|shadows|impostors|impostors-off [quick]
+# Usage: bench/run_scenes.sh scenes|stress|shadows|impostors|impostors-off|living [quick]
 set -uo pipefail
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
@@ -53,6 +53,23 @@ elif [[ $part == impostors || $part == impostors-off ]]; then
     "$bin/crowd-render" --device NVIDIA --scene stress --count 1000000 --start $start --method compute \
       --size 1920x1080 --frames 30 $flags --out "$res/stress-1m-t$start-$part.png" \
       --json "$res/stress-1m-t$start-$part-render.json" >"$res/stress-1m-t$start-$part-render.txt" 2>&1
+  done
+elif [[ $part == living ]]; then
+  # The living crowd (issue 10): bone palettes of a milling crowd, 1,024 to 1,000,000 soldiers, on the
+  # CPU (one thread, every thread) and the GPU; then the whole frame at 100,000 soldiers inside the
+  # crowd, milling (moving, crossfading) against looping in place, GPU and CPU animation.
+  "$bin/crowd-bench" --device NVIDIA --palette --models soldier --json "$res/palettes.json" \
+    >"$res/palettes.txt" 2>"$res/palettes.err"
+  echo "palettes exit $?"; cat "$res/palettes.txt"
+  for behaviour in in-place mill; do
+    for animation in gpu cpu; do
+      bench "stress-inside-100k-$behaviour-$animation" --scene stress $hd --start 20 --methods compute \
+        --counts 100000 --behaviour $behaviour --animation $animation
+    done
+  done
+  for scene in mill march; do
+    "$bin/crowd-render" --device NVIDIA --scene "$scene" --method compute --size 1920x1080 --frames 600 \
+      --out "$res/$scene.png" --json "$res/$scene-render.json" >"$res/$scene-render.txt" 2>&1
   done
 elif [[ $part == scenes ]]; then
   bench fig3 --scene paper-fig3 $hd

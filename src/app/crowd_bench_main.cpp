@@ -33,6 +33,8 @@ usage: crowd-bench [options]
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
+  --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
+  --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
   --impostors on|off   the impostor level for far characters (default off); with
   --impostor-threshold PX  (default 32) and --mesh-capacity N (default 65536) as in crowd-render
   --start SECONDS      scene time of the first frame (where on the scene's camera path to measure)
@@ -96,7 +98,7 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
 
 BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     BenchOptions o;
-    bool impostorsGiven = false, shadowsGiven = false, startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
+    bool behaviourGiven = false, impostorsGiven = false, shadowsGiven = false, startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
     for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& flag = args[i];
@@ -115,7 +117,11 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             const float keepStart = o.scene.startSeconds;
             const bool keepShadows = o.scene.shadows;
             const std::uint32_t keepCapacity = o.scene.meshCapacity;
+            const crowd::Behaviour keepBehaviour = o.scene.scene.behaviour;
+            const render::AnimationPath keepAnimation = o.scene.animation;
             o.scene = app::parseRenderOptions({"--scene", preset.name});
+            o.scene.animation = keepAnimation;
+            if (behaviourGiven) o.scene.scene.behaviour = keepBehaviour;
             if (impostorsGiven) {
                 o.scene.cull.impostors = keep.impostors, o.scene.cull.impostorThreshold = keep.impostorThreshold;
                 o.scene.meshCapacity = keepCapacity;
@@ -127,6 +133,11 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             if (!modelsGiven) o.models = {preset.models};
             if (!countsGiven) o.counts = {preset.count};
             sceneGiven = true;
+        } else if (flag == "--behaviour") {
+            o.scene.scene.behaviour = app::parseRenderOptions({"--behaviour", next()}).scene.behaviour;
+            behaviourGiven = true;
+        } else if (flag == "--animation") {
+            o.scene.animation = app::parseRenderOptions({"--animation", next()}).animation;
         } else if (flag == "--shadows") {
             o.scene.shadows = app::parseRenderOptions({"--shadows", next()}).shadows;
             shadowsGiven = true;
