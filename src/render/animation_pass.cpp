@@ -9,6 +9,7 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "motion.comp.spv.h"
+#include "motion_scatter.comp.spv.h"
 #include "palette.comp.spv.h"
 #include "palette_dispatch.comp.spv.h"
 
@@ -56,12 +57,20 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
         library_.push_back(upload(context, library.keyValues(), "animation key values"));
         library_.push_back(upload(context, library.rootSamples(), "root motion"));
         for (const gpu::Buffer& b : library_) libraryBytes_ += b.size;
-        const VkDeviceSize segmentBytes = std::max<VkDeviceSize>(1, crowd.size()) * sizeof(gpu::MotionRecord);
-        motions_ = gpu::createBuffer(context, segmentBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        const VkDeviceSize characters = std::max<VkDeviceSize>(1, crowd.size());
+        const VkDeviceSize segmentBytes = characters * sizeof(gpu::MotionRecord);
+        motions_ = gpu::createBuffer(context, segmentBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      gpu::MemoryUse::DeviceLocal, "motion segments");
-        for (std::uint32_t i = 0; i < framesInFlight; ++i)
-            staging_.push_back(gpu::createBuffer(context, segmentBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                                 gpu::MemoryUse::HostUpload, "motion segments (upload)"));
+        constexpr VkDescriptorType storageType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        for (std::uint32_t i = 0; i < framesInFlight; ++i) {
+            staging_.push_back(gpu::createBuffer(context, segmentBytes + characters * sizeof(std::uint32_t),
+                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::HostUpload,
+                                                 "motion segments (upload)"));
+            const gpu::BufferBinding scatter[] = {{storageType, staging_.back().buffer, 0, segmentBytes},
+                                                  {storageType, staging_.back().buffer, segmentBytes, VK_WHOLE_SIZE},
+                                                  {storageType, motions_.buffer}};
+            scatterSets_.push_back(std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, scatter));
+        }
         dispatches_ = gpu::createBuffer(context, std::max(1u, lists.bucketCount()) * sizeof(glm::uvec4),
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                         gpu::MemoryUse::DeviceLocal, "palette dispatches");
@@ -83,6 +92,9 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
         const VkPushConstantRange motionPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::MotionPush)};
         motionLayout_ = gpu::createPipelineLayout(context, {&motionSetLayout, 1}, {&motionPush, 1});
         motion_ = gpu::createComputePipeline(context, motion_comp_spv, motionLayout_, {});
+        const VkDescriptorSetLayout scatterSetLayout = scatterSets_.front()->layout();
+        scatterLayout_ = gpu::createPipelineLayout(context, {&scatterSetLayout, 1}, {&motionPush, 1});
+        scatter_ = gpu::createComputePipeline(context, motion_scatter_comp_spv, scatterLayout_, {});
         const VkDescriptorSetLayout paletteSetLayout = paletteSet_->layout();
         const VkPushConstantRange palettePush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::PalettePush)};
         paletteLayout_ = gpu::createPipelineLayout(context, {&paletteSetLayout, 1}, {&palettePush, 1});
@@ -97,16 +109,17 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
 AnimationPass::~AnimationPass() { release(); }
 
 void AnimationPass::release() {
-    for (VkPipeline* p : {&paletteDispatch_, &palette_, &motion_}) {
+    for (VkPipeline* p : {&scatter_, &paletteDispatch_, &palette_, &motion_}) {
         if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
     }
-    for (VkPipelineLayout* l : {&paletteLayout_, &motionLayout_}) {
+    for (VkPipelineLayout* l : {&scatterLayout_, &paletteLayout_, &motionLayout_}) {
         if (*l) vkDestroyPipelineLayout(context_.device, *l, nullptr);
         *l = VK_NULL_HANDLE;
     }
     paletteSet_.reset();
     motionSet_.reset();
+    scatterSets_.clear();
     for (gpu::Buffer& b : staging_) gpu::destroyBuffer(context_, b);
     staging_.clear();
     gpu::destroyBuffer(context_, dispatches_);
@@ -116,35 +129,32 @@ void AnimationPass::release() {
 }
 
 void AnimationPass::uploadSegments(VkCommandBuffer cmd, std::uint32_t frameSlot) {
-    const bool sawPrevious = uploadedGeneration_ != kNothing && crowd_.generation() == uploadedGeneration_ + 1;
     if (crowd_.generation() == uploadedGeneration_) return;
-    const std::vector<gpu::MotionRecord>& segments = crowd_.segments();
-    auto* staged = static_cast<gpu::MotionRecord*>(staging_[frameSlot].mapped);
-    // Changed characters in runs of consecutive indices: one copy region per run.
-    std::vector<VkBufferCopy> regions;
-    auto stage = [&](std::uint32_t c, std::uint32_t slot) {
-        staged[slot] = segments[c];
-        const VkDeviceSize src = slot * sizeof(gpu::MotionRecord), dst = c * sizeof(gpu::MotionRecord);
-        if (!regions.empty() && regions.back().srcOffset + regions.back().size == src &&
-            regions.back().dstOffset + regions.back().size == dst)
-            regions.back().size += sizeof(gpu::MotionRecord);
-        else
-            regions.push_back({src, dst, sizeof(gpu::MotionRecord)});
-    };
-    if (sawPrevious) {
-        std::uint32_t slot = 0;
-        for (std::uint32_t c : crowd_.lastChanged()) stage(c, slot++);
-    } else {
-        for (std::uint32_t c = 0; c < crowd_.size(); ++c) stage(c, c);
-    }
+    const bool sawPrevious = uploadedGeneration_ != kNothing && crowd_.generation() == uploadedGeneration_ + 1;
     uploadedGeneration_ = crowd_.generation();
-    if (regions.empty()) return;
-    // The previous frame's motion pass must be done reading the segments the copy overwrites.
-    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-    vkCmdCopyBuffer(cmd, staging_[frameSlot].buffer, motions_.buffer, static_cast<std::uint32_t>(regions.size()),
-                    regions.data());
-    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+    const std::vector<gpu::MotionRecord>& segments = crowd_.segments();
+    const std::uint32_t characters = crowd_.size();
+    auto* staged = static_cast<gpu::MotionRecord*>(staging_[frameSlot].mapped);
+    auto* indices = reinterpret_cast<std::uint32_t*>(staged + std::max(1u, characters));
+    std::uint32_t count = 0;
+    auto stage = [&](std::uint32_t c) { staged[count] = segments[c], indices[count++] = c; };
+    if (sawPrevious) {
+        for (std::uint32_t c : crowd_.lastChanged()) stage(c);
+    } else {
+        for (std::uint32_t c = 0; c < characters; ++c) stage(c);
+    }
+    if (count == 0) return;
+    // The previous frame's motion pass must be done reading the segments the scatter overwrites.
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+                       kComputeWrite);
+    const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
+    const gpu::MotionPush push{glm::uvec4(count, 0u, 0u, 0u), glm::vec4(0.0f)};
+    const VkDescriptorSet set = scatterSets_[frameSlot]->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, scatterLayout_, 0, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, scatterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, scatter_);
+    vkCmdDispatch(cmd, groupsFor(count, CULL_WORKGROUP_SIZE, maxGroups), 1, 1);
+    gpu::memoryBarrier(cmd, kComputeWrite, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
 }
 
 void AnimationPass::recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, float time) {
@@ -176,7 +186,8 @@ void AnimationPass::recordPalettes(VkCommandBuffer cmd) {
     const anim::ClipLibrary& library = crowd_.library();
     for (std::uint32_t b = 0; b < lists_.bucketCount(); ++b) {
         const std::uint32_t joints = library.jointCount(lists_.buckets()[b].list.x);
-        const gpu::PalettePush push{glm::uvec4(b, joints, std::max(1u, kPaletteThreads / joints), 0u)};
+        const std::uint32_t model = lists_.buckets()[b].list.x;
+        const gpu::PalettePush push{glm::uvec4(b, joints, std::max(1u, kPaletteThreads / joints), library.hierarchyDepths(model))};
         vkCmdPushConstants(cmd, paletteLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
         vkCmdDispatchIndirect(cmd, dispatches_.buffer, b * sizeof(glm::uvec4));
     }

@@ -58,11 +58,14 @@ private:
     std::vector<gpu::Buffer> library_;
     std::uint64_t libraryBytes_ = 0;
     gpu::Buffer motions_, dispatches_;
+    // Per frame in flight: replanned segments, then their characters' indices (after the segments).
     std::vector<gpu::Buffer> staging_;
+    std::vector<std::unique_ptr<gpu::DescriptorBundle>> scatterSets_;
     std::uint64_t uploadedGeneration_ = kNothing;
     std::unique_ptr<gpu::DescriptorBundle> motionSet_, paletteSet_;
-    VkPipelineLayout motionLayout_ = VK_NULL_HANDLE, paletteLayout_ = VK_NULL_HANDLE;
-    VkPipeline motion_ = VK_NULL_HANDLE, palette_ = VK_NULL_HANDLE, paletteDispatch_ = VK_NULL_HANDLE;
+    VkPipelineLayout motionLayout_ = VK_NULL_HANDLE, paletteLayout_ = VK_NULL_HANDLE, scatterLayout_ = VK_NULL_HANDLE;
+    VkPipeline motion_ = VK_NULL_HANDLE, palette_ = VK_NULL_HANDLE, paletteDispatch_ = VK_NULL_HANDLE,
+               scatter_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render
