@@ -156,7 +156,7 @@ struct AnimationModel {
 struct AnimationJoint {
     vec4 restTranslation;  // xyz, w: parent joint within the model (-1 for a root), exact as a float
     vec4 restRotation;     // quaternion x, y, z, w
-    vec4 restScale;        // xyz, w: depth below the roots (0 for a root), exact as a float
+    vec4 restScale;        // xyz, w: unused
     BoneRows inverseBind;
 };
 
@@ -190,7 +190,7 @@ struct MotionRecord {
 };
 
 // Push constants of the palette passes. palette.comp: x: bucket, y: joints of its model, z:
-// characters per workgroup, w: depths of its hierarchy (deepest joint's depth + 1). palette_dispatch.comp: x: buckets, y: most workgroups in a
+// characters per workgroup, w: unused. palette_dispatch.comp: x: buckets, y: most workgroups in a
 // dispatch's x dimension, z, w: unused.
 struct PalettePush {
     uvec4 bucket;

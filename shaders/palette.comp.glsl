@@ -6,9 +6,9 @@
 //
 // One thread per (character, joint): a workgroup takes 64 / joints characters (one when a model has
 // more than 64 joints). Each thread samples its joint's clip(s) at the character's synchronized phase
-// and blends them into shared memory; then the hierarchy is composed one depth at a time (a barrier
-// between depths, one product per joint), placed, and met with the inverse bind matrices:
-// bone = placement * root * local[root joint] * ... * local[j] * inverseBind[j].
+// and blends them into shared memory; then each composes its joint's chain of parents up to the root
+// from there (no sweep over the hierarchy, no barrier per level), places it and applies its inverse
+// bind matrix: bone = placement * root * local[root joint] * ... * local[j] * inverseBind[j].
 #include "gpu_types.h"
 
 layout(local_size_x = 64) in;
@@ -28,7 +28,10 @@ layout(std430, set = 0, binding = 10) writeonly buffer Bones { BoneRows bones[];
 
 #include "animation.glsl.inc"
 
-shared BoneRows locals[MAX_ANIMATION_JOINTS];
+// Slots of shared memory: 64 for models of up to 64 joints (so it stays small and many workgroups
+// share a multiprocessor), MAX_ANIMATION_JOINTS for larger ones (one character a workgroup).
+layout(constant_id = 0) const uint SLOTS = 64;
+shared BoneRows locals[SLOTS];
 
 // Joint j's local transform for character `character` of `model`.
 BoneRows localTransform(CharacterRecord character, AnimationModel model, uint j) {
@@ -49,13 +52,10 @@ BoneRows localTransform(CharacterRecord character, AnimationModel model, uint j)
     return affineOf(pose);
 }
 
-int parentOf(AnimationModel model, uint j) { return int(animJoints[model.info.x + j].restTranslation.w); }
-
 void main() {
     BucketRecord bucket = buckets[push.bucket.x];
     uint joints = push.bucket.y;
     uint perGroup = push.bucket.z;
-    uint depths = push.bucket.w;  // the model's deepest joint's depth + 1
     uint count = frames[push.bucket.x].count;
     AnimationModel model = animModels[bucket.list.x];
     uint slots = perGroup * joints;
@@ -67,32 +67,21 @@ void main() {
             uint k = first + i / joints;
             if (k < count) locals[i] = localTransform(characters[visible[bucket.list.z + k]], model, i % joints);
         }
-        // Depth by depth, each joint's local transform becomes its model-space one (its parent's is
-        // final by then); roots take the character's placement and the model's root transform.
-        for (uint depth = 0u; depth < depths; ++depth) {
-            barrier();
-            for (uint i = gl_LocalInvocationIndex; i < slots; i += 64u) {
-                uint k = first + i / joints;
-                uint j = i % joints;
-                if (k >= count || uint(animJoints[model.info.x + j].restScale.w) != depth) continue;
-                int parent = parentOf(model, j);
-                BoneRows above;
-                if (parent >= 0) {
-                    above = locals[i - j + uint(parent)];
-                } else {
-                    CharacterRecord character = characters[visible[bucket.list.z + k]];
-                    above = composeAffine(placementAffine(character.placement, character.tint.w), model.root);
-                }
-                locals[i] = composeAffine(above, locals[i]);
-            }
-        }
         barrier();
         for (uint i = gl_LocalInvocationIndex; i < slots; i += 64u) {
             uint k = first + i / joints;
             if (k >= count) continue;
             uint j = i % joints;
-            uint bone = characters[visible[bucket.list.z + k]].ids.y + j;
-            bones[bone] = composeAffine(locals[i], animJoints[model.info.x + j].inverseBind);
+            uint base = i - j;  // this character's first slot in `locals`
+            CharacterRecord character = characters[visible[bucket.list.z + k]];
+            BoneRows chain = locals[i];
+            int parent = int(animJoints[model.info.x + j].restTranslation.w);
+            while (parent >= 0) {
+                chain = composeAffine(locals[base + uint(parent)], chain);
+                parent = int(animJoints[model.info.x + uint(parent)].restTranslation.w);
+            }
+            BoneRows top = composeAffine(placementAffine(character.placement, character.tint.w), model.root);
+            bones[character.ids.y + j] = composeAffine(composeAffine(top, chain), animJoints[model.info.x + j].inverseBind);
         }
     }
 }

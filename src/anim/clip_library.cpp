@@ -1,6 +1,5 @@
 #include "anim/clip_library.h"
 
-#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -53,10 +52,7 @@ std::uint32_t ClipLibrary::addModel(const Skeleton& skeleton, std::span<const Cl
         gpu::AnimationJoint joint{};
         joint.restTranslation = glm::vec4(rest.translation, static_cast<float>(skeleton.parents[j]));
         joint.restRotation = glm::vec4(rest.rotation.x, rest.rotation.y, rest.rotation.z, rest.rotation.w);
-        // Depth below the roots, for the GPU's depth-by-depth hierarchy (parents come first).
-        const std::int32_t parent = skeleton.parents[j];
-        const float depth = parent < 0 ? 0.0f : joints_[model.info.x + static_cast<std::uint32_t>(parent)].restScale.w + 1.0f;
-        joint.restScale = glm::vec4(rest.scale, depth);
+        joint.restScale = glm::vec4(rest.scale, 0.0f);
         joint.inverseBind = toRows(skeleton.inverseBind[j]);
         joints_.push_back(joint);
     }
@@ -85,12 +81,6 @@ void ClipLibrary::addClip(const Clip& clip, std::uint32_t joints, const RootMoti
         times_.insert(times_.end(), channel.times.begin(), channel.times.end());
         values_.insert(values_.end(), channel.values.begin(), channel.values.end());
     }
-}
-
-std::uint32_t ClipLibrary::hierarchyDepths(std::uint32_t model) const {
-    float deepest = 0.0f;
-    for (std::uint32_t j = 0; j < jointCount(model); ++j) deepest = std::max(deepest, joints_[models_[model].info.x + j].restScale.w);
-    return static_cast<std::uint32_t>(deepest) + 1u;
 }
 
 glm::vec2 ClipLibrary::stride(std::uint32_t model, std::uint32_t clip) const {

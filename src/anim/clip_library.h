@@ -25,8 +25,6 @@ public:
 
     std::uint32_t modelCount() const { return static_cast<std::uint32_t>(models_.size()); }
     std::uint32_t jointCount(std::uint32_t model) const { return models_[model].info.y; }
-    // The deepest joint's depth below the roots, plus one.
-    std::uint32_t hierarchyDepths(std::uint32_t model) const;
     std::uint32_t clipCount(std::uint32_t model) const { return models_[model].info.w; }
     // The library-wide index of a model's clip.
     std::uint32_t clipIndex(std::uint32_t model, std::uint32_t clip) const { return models_[model].info.z + clip; }

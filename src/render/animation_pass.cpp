@@ -98,7 +98,9 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
         const VkDescriptorSetLayout paletteSetLayout = paletteSet_->layout();
         const VkPushConstantRange palettePush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::PalettePush)};
         paletteLayout_ = gpu::createPipelineLayout(context, {&paletteSetLayout, 1}, {&palettePush, 1});
-        palette_ = gpu::createComputePipeline(context, palette_comp_spv, paletteLayout_, {});
+        const std::uint32_t small[] = {kPaletteThreads}, large[] = {MAX_ANIMATION_JOINTS};
+        palette_ = gpu::createComputePipeline(context, palette_comp_spv, paletteLayout_, small);
+        paletteLarge_ = gpu::createComputePipeline(context, palette_comp_spv, paletteLayout_, large);
         paletteDispatch_ = gpu::createComputePipeline(context, palette_dispatch_comp_spv, paletteLayout_, {});
     } catch (...) {
         release();
@@ -109,7 +111,7 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
 AnimationPass::~AnimationPass() { release(); }
 
 void AnimationPass::release() {
-    for (VkPipeline* p : {&scatter_, &paletteDispatch_, &palette_, &motion_}) {
+    for (VkPipeline* p : {&scatter_, &paletteDispatch_, &paletteLarge_, &palette_, &motion_}) {
         if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
     }
@@ -182,12 +184,11 @@ void AnimationPass::recordPalettes(VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, paletteDispatch_);
     vkCmdDispatch(cmd, 1, 1, 1);
     gpu::memoryBarrier(cmd, kComputeWrite, {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, palette_);
     const anim::ClipLibrary& library = crowd_.library();
     for (std::uint32_t b = 0; b < lists_.bucketCount(); ++b) {
         const std::uint32_t joints = library.jointCount(lists_.buckets()[b].list.x);
-        const std::uint32_t model = lists_.buckets()[b].list.x;
-        const gpu::PalettePush push{glm::uvec4(b, joints, std::max(1u, kPaletteThreads / joints), library.hierarchyDepths(model))};
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, joints <= kPaletteThreads ? palette_ : paletteLarge_);
+        const gpu::PalettePush push{glm::uvec4(b, joints, std::max(1u, kPaletteThreads / joints), 0u)};
         vkCmdPushConstants(cmd, paletteLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
         vkCmdDispatchIndirect(cmd, dispatches_.buffer, b * sizeof(glm::uvec4));
     }

@@ -64,8 +64,9 @@ private:
     std::uint64_t uploadedGeneration_ = kNothing;
     std::unique_ptr<gpu::DescriptorBundle> motionSet_, paletteSet_;
     VkPipelineLayout motionLayout_ = VK_NULL_HANDLE, paletteLayout_ = VK_NULL_HANDLE, scatterLayout_ = VK_NULL_HANDLE;
-    VkPipeline motion_ = VK_NULL_HANDLE, palette_ = VK_NULL_HANDLE, paletteDispatch_ = VK_NULL_HANDLE,
-               scatter_ = VK_NULL_HANDLE;
+    VkPipeline motion_ = VK_NULL_HANDLE, paletteDispatch_ = VK_NULL_HANDLE, scatter_ = VK_NULL_HANDLE;
+    // The palette pass for models of up to 64 joints, and for larger ones (more shared memory).
+    VkPipeline palette_ = VK_NULL_HANDLE, paletteLarge_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render
