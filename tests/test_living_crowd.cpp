@@ -21,6 +21,7 @@
 #include "crowd/crowd.h"
 #include "gpu/vulkan_error.h"
 #include "model/procedural_models.h"
+#include "render/crowd_buffers.h"
 #include "skin/cpu_skinning.h"
 #include "support/gltf_builder.h"
 #include "support/gpu_test.h"
@@ -362,6 +363,25 @@ TEST(FootSliding, ThePlantedFootOfAWalkingOrRunningSoldierMovesUnderAFifthOfItsS
         const crowd::Crowd inPlace(soldier(), {standingAt({0, 0, 0}, clip)});
         EXPECT_GT(plantedSlide(inPlace, 1.0f, 3.0f), 0.5f * travel) << gait.clip;
     }
+}
+
+TEST(BoneLayout, MillionsOfCharactersFallBackToTightlyPackedBoneBlocks) {
+    // The H100's limits: 64-byte uniform offsets make a soldier's 21 rows (1,008 bytes) a 24-row block.
+    VkPhysicalDeviceLimits limits{};
+    limits.minUniformBufferOffsetAlignment = 64;
+    limits.minStorageBufferOffsetAlignment = 16;
+    limits.maxStorageBufferRange = 100u * 1024u;
+    crowd::Crowd small(soldier(), std::vector<crowd::Character>(80, standingAt({0, 0, 0})));
+    const render::BoneLayout aligned = render::planBones(limits, small);
+    EXPECT_TRUE(aligned.aligned);
+    EXPECT_EQ(aligned.offsets[1], 24u);
+    EXPECT_EQ(aligned.totalRows, 81u * 24u);
+    // 100 soldiers: 100 KiB range; aligned blocks need 101 x 1,152 bytes, tight ones 101 x 1,008.
+    crowd::Crowd many(soldier(), std::vector<crowd::Character>(100, standingAt({0, 0, 0})));
+    const render::BoneLayout tight = render::planBones(limits, many);
+    EXPECT_FALSE(tight.aligned);
+    EXPECT_EQ(tight.offsets[1], 21u);
+    EXPECT_LE(tight.bytes(), limits.maxStorageBufferRange);
 }
 
 // ---- GPU against CPU ----

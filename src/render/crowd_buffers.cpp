@@ -13,17 +13,19 @@
 namespace render {
 
 std::uint32_t boneStrideFor(const gpu::VulkanContext& context, std::uint32_t jointCount) {
-    const auto& limits = context.properties.limits;
+    return boneStrideFor(context.properties.limits, jointCount);
+}
+
+std::uint32_t boneStrideFor(const VkPhysicalDeviceLimits& limits, std::uint32_t jointCount) {
     const std::uint64_t align = std::lcm(std::lcm<std::uint64_t>(sizeof(gpu::BoneRows), limits.minUniformBufferOffsetAlignment),
                                          limits.minStorageBufferOffsetAlignment);
     const std::uint64_t bytes = (jointCount * sizeof(gpu::BoneRows) + align - 1) / align * align;
     return static_cast<std::uint32_t>(bytes / sizeof(gpu::BoneRows));
 }
 
-BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd) {
-    std::vector<std::uint32_t> strides;
-    for (const model::SkinnedModel* m : crowd.models())
-        strides.push_back(boneStrideFor(context, static_cast<std::uint32_t>(m->skeleton.jointCount())));
+namespace {
+
+BoneLayout planBones(const crowd::Crowd& crowd, const std::vector<std::uint32_t>& strides) {
     BoneLayout layout;
     layout.largestBlock = *std::max_element(strides.begin(), strides.end());
     layout.offsets.reserve(crowd.size());
@@ -33,6 +35,27 @@ BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crow
         rows += strides[c.model];
     }
     layout.totalRows = rows + layout.largestBlock;
+    return layout;
+}
+
+}  // namespace
+
+BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd) {
+    return planBones(context.properties.limits, crowd);
+}
+
+BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd) {
+    std::vector<std::uint32_t> aligned, tight;
+    for (const model::SkinnedModel* m : crowd.models()) {
+        tight.push_back(static_cast<std::uint32_t>(m->skeleton.jointCount()));
+        aligned.push_back(boneStrideFor(limits, tight.back()));
+    }
+    BoneLayout layout = planBones(crowd, aligned);
+    // Alignment costs up to a few rows a character: millions of characters may fit only without it.
+    if (layout.bytes() > limits.maxStorageBufferRange) {
+        layout = planBones(crowd, tight);
+        layout.aligned = false;
+    }
     return layout;
 }
 

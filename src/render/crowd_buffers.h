@@ -23,6 +23,7 @@ constexpr VkPipelineStageFlags2 kCharacterReaders =
 // every character's block aligned for a dynamic uniform-buffer offset (the vertex-shader baseline)
 // and a storage offset.
 std::uint32_t boneStrideFor(const gpu::VulkanContext& context, std::uint32_t jointCount);
+std::uint32_t boneStrideFor(const VkPhysicalDeviceLimits& limits, std::uint32_t jointCount);
 
 // Where every character's bone block starts (in BoneRows), and the buffer's size: blocks in character
 // order, then room for one more of the largest block, so the baseline's fixed uniform range (the
@@ -31,9 +32,14 @@ struct BoneLayout {
     std::vector<std::uint32_t> offsets;
     std::uint32_t largestBlock = 0;  // BoneRows
     std::uint64_t totalRows = 0;
+    // Blocks at offsets a dynamic uniform binding may take (the vs method needs it); false when the
+    // crowd's bones only fit the storage-buffer range packed tightly (joints x 48 bytes apiece).
+    bool aligned = true;
     std::uint64_t bytes() const { return totalRows * sizeof(gpu::BoneRows); }
 };
+// Aligned blocks when they fit the device's storage-buffer range, else tightly packed ones.
 BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd);
+BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd);
 
 // The GPU records of the crowd's characters.
 std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, std::span<const std::uint32_t> boneOffsets);
@@ -61,6 +67,7 @@ public:
     const std::vector<gpu::CharacterRecord>& records() const { return records_; }
     std::span<const std::uint32_t> boneOffsets() const { return layout_.offsets; }
     std::uint32_t largestBoneBlock() const { return layout_.largestBlock; }
+    bool bonesAligned() const { return layout_.aligned; }
     std::uint32_t characterCount() const { return static_cast<std::uint32_t>(records_.size()); }
     VkDeviceSize deviceBytes() const { return characters_.size + bones_.size; }
 

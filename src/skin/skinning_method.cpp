@@ -1,5 +1,8 @@
 #include "skin/skinning_method.h"
 
+#include "gpu/vulkan_error.h"
+#include "render/crowd_buffers.h"
+
 #include "skin/compute_skinning.h"
 #include "skin/direct_fragment_skinning.h"
 #include "skin/fragment_skinning.h"
@@ -34,7 +37,13 @@ bool parseMethod(const std::string& name, Method& method) {
 
 std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const MethodSetup& setup) {
     switch (method) {
-        case Method::VertexShader: return std::make_unique<VertexShaderSkinning>(false);
+        case Method::VertexShader:
+            // It binds each character's bones at a dynamic uniform offset, which must be aligned.
+            if (!setup.crowd.bonesAligned())
+                throw gpu::Error("--method vs: this crowd's bone matrices fit the device's storage-buffer range only "
+                                 "packed tightly, and vs binds each character's at an aligned offset; use another "
+                                 "method or fewer characters");
+            return std::make_unique<VertexShaderSkinning>(false);
         case Method::VertexShaderInstanced: return std::make_unique<VertexShaderSkinning>(true);
         case Method::TwoPass: return std::make_unique<FragmentSkinning>(setup);
         case Method::TwoPassDirect: return std::make_unique<DirectFragmentSkinning>(setup);
