@@ -35,9 +35,10 @@ void main() {
     }
     totals.drawCount = drawBase;
     totals.skinnedVertices = vertexBase;
-    // The impostor level: one instanced draw of a quad (6 indices) per character of its list.
-    impostorFrame.indexCount = 6u;
-    impostorFrame.instanceCount = impostorFrame.count;
+    // The impostor level: one draw of six vertices (two triangles) per character of its list, not an
+    // instance each: instances of six vertices would leave most of every vertex-shader warp idle.
+    impostorFrame.vertexCount = 6u * impostorFrame.count;
+    impostorFrame.instanceCount = 1u;
     impostorFrame.drawCount = 1u;
     totals.emitDispatch = uvec4(groupsFor(drawBase, CULL_WORKGROUP_SIZE), 1u, 1u, 0u);
 }

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The impostor level: one instance per character of the impostor list, a quad of six indices facing the eye
+// The impostor level: six vertices per character of the impostor list (vertex v draws corner v % 6
+// of character v / 6), a quad facing the eye
 // (spherical billboard over the model's pose sphere, turned by the character's heading) that shows
 // the atlas cell of its clip, phase and view direction. No bones, no skinned vertices: only the record.
 #include "gpu_types.h"
@@ -22,9 +23,9 @@ vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.
 
 void main() {
     const vec2 corners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
-    CharacterRecord character = characters[impostors[gl_InstanceIndex]];
+    CharacterRecord character = characters[impostors[gl_VertexIndex / 6]];
     ImpostorModel m = impostorModels[character.ids.x];
-    vec2 corner = corners[gl_VertexIndex];
+    vec2 corner = corners[gl_VertexIndex % 6];
 
     float c = cos(character.placement.w);
     float s = sin(character.placement.w);

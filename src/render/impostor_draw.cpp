@@ -19,10 +19,6 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
                            const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout)
     : context_(context), lists_(lists), atlas_(atlas) {
     try {
-        // One instance per impostor, six indices per quad.
-        const std::uint32_t quad[6] = {0, 1, 2, 3, 4, 5};
-        quad_ = gpu::createBufferWithData(context, std::as_bytes(std::span(quad)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                                          "impostor quad indices");
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         const gpu::BufferBinding bindings[] = {{storage, pool.modelTable().buffer},
                                                {storage, atlas.modelTable().buffer},
@@ -53,7 +49,6 @@ void ImpostorDraw::release() {
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     pipeline_ = VK_NULL_HANDLE, layout_ = VK_NULL_HANDLE;
     set_.reset();
-    gpu::destroyBuffer(context_, quad_);
 }
 
 void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const {
@@ -61,11 +56,11 @@ void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const S
     const VkDescriptorSet sets[3] = {sceneSet, set_->set(), atlas_.set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 3, sets, 0, nullptr);
     vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
-    vkCmdBindIndexBuffer(cmd, quad_.buffer, 0, VK_INDEX_TYPE_UINT32);
-    // The Count form with a count of 1 rather than vkCmdDrawIndexedIndirect: lavapipe (Mesa 22.3) kept
-    // the count buffer of the mesh draw before it and drew nothing. Same cost on other devices.
-    vkCmdDrawIndexedIndirectCount(cmd, lists_.impostorFrame().buffer, 0, lists_.impostorFrame().buffer,
-                                  offsetof(gpu::ImpostorFrame, drawCount), 1, sizeof(gpu::ImpostorFrame));
+    // Six vertices per impostor in one draw, no index buffer. The Count form with a count of 1 rather
+    // than vkCmdDrawIndirect: lavapipe (Mesa 22.3) kept the count buffer of the mesh draw before it and
+    // drew nothing. Same cost on other devices.
+    vkCmdDrawIndirectCount(cmd, lists_.impostorFrame().buffer, 0, lists_.impostorFrame().buffer,
+                           offsetof(gpu::ImpostorFrame, drawCount), 1, sizeof(gpu::ImpostorFrame));
 }
 
 }  // namespace render

@@ -36,7 +36,6 @@ private:
     const DrawLists& lists_;
     const ImpostorAtlas& atlas_;
     std::unique_ptr<gpu::DescriptorBundle> set_;
-    gpu::Buffer quad_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
