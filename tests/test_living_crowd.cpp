@@ -258,8 +258,47 @@ TEST(CrowdApi, MoveToArrivesAndStops) {
     EXPECT_LT(glm::distance(glm::vec2(s.position.x, s.position.z), glm::vec2(6.0f, -8.0f)), 0.6f);
     EXPECT_EQ(soldier().clips[s.clipTo].name, "idle");
     EXPECT_EQ(s.weight, 1.0f);
+    const gpu::MotionRecord before = crowd.segments()[0];
     EXPECT_THROW(crowd.play(0, 99, 21.0f), gpu::Error);
     EXPECT_THROW(crowd.moveTo(3, {0, 0}, 21.0f), gpu::Error);
+    EXPECT_THROW(crowd.moveTo(0, {0, 0}, 21.0f, 0), gpu::Error) << "idle does not travel";
+    // Refused commands leave the character as it was: still standing at its target later on.
+    crowd.advanceTo(40.0f);
+    EXPECT_EQ(std::memcmp(&before, &crowd.segments()[0], sizeof before), 0);
+}
+
+TEST(CrowdApi, TheReadmeExampleRunsAsWritten) {
+    const model::SkinnedModel& soldier = ::soldier();
+    const model::SkinnedModel& horse = ::horse();
+    // As in README.md, "The C++ API" (without the renderer).
+    const std::vector<const model::SkinnedModel*> models = {&soldier, &horse};
+    crowd::LayoutOptions layout;
+    layout.count = 1000;
+    crowd::BehaviourSettings mill;
+    mill.kind = crowd::Behaviour::Mill;
+    mill.seed = 7;
+    crowd::Crowd crowd(models, crowd::gridLayout(models, layout), mill);
+    const std::uint32_t hero = crowd.spawn({.clip = 0, .position = {0, 0, 0}, .model = 0});
+    crowd.moveTo(hero, {12.0f, -4.0f}, 2.0f);
+    std::string standing;
+    for (std::uint32_t frame = 0; frame < 32 * 60; ++frame) {
+        const float time = static_cast<float>(frame) / 60.0f;
+        if (frame == 14 * 60) {
+            const crowd::MotionState there = crowd.stateAt(hero, time);
+            EXPECT_LT(glm::distance(glm::vec2(there.position.x, there.position.z), glm::vec2(12.0f, -4.0f)), 0.6f);
+            standing = soldier.clips[there.clipTo].name;
+            crowd.moveTo(hero, {0.0f, 0.0f}, time, soldier.findClip("run"), 1.1f);
+        }
+        // The soldier has no "wave": that command is a clear error, not a crash.
+        if (frame == 30 * 60) {
+            EXPECT_THROW(crowd.play(hero, soldier.findClip("wave"), time, 0.5f), gpu::Error);
+        }
+        crowd.advanceTo(time);
+    }
+    EXPECT_EQ(standing, "idle");
+    const crowd::MotionState end = crowd.stateAt(hero, 32.0f);
+    EXPECT_LT(glm::length(glm::vec2(end.position.x, end.position.z)), 0.6f);
+    EXPECT_EQ(crowd.size(), 1001u);
 }
 
 // ---- Crossfades and feet ----

@@ -187,8 +187,12 @@ void Crowd::advanceTo(float time) {
     ++generation_;
 }
 
+void Crowd::checkCharacter(std::uint32_t character) const {
+    if (character >= size())
+        throw gpu::Error("no character " + std::to_string(character) + " in a crowd of " + std::to_string(size()));
+}
+
 void Crowd::command(std::uint32_t character, float at) {
-    if (character >= size()) throw gpu::Error("no character " + std::to_string(character) + " in a crowd of " + std::to_string(size()));
     Agent& agent = agents_[character];
     const gpu::MotionRecord& current = segments_[character];
     // A crossfade in progress finishes first: a segment blends two clips, never three.
@@ -196,27 +200,32 @@ void Crowd::command(std::uint32_t character, float at) {
     agent.commanded = true;
 }
 
+// Commands check everything before they change anything: a refused one leaves the character as it was.
 void Crowd::moveTo(std::uint32_t character, glm::vec2 target, float at, std::int32_t gait, float rate) {
+    checkCharacter(character);
+    const std::uint32_t model = characters_[character].model;
+    const std::int32_t clip = gait >= 0 ? gait : gaits_[model].walk;
+    if (clip < 0 || static_cast<std::uint32_t>(clip) >= library_.clipCount(model) ||
+        glm::length(library_.stride(model, static_cast<std::uint32_t>(clip))) == 0.0f)
+        throw gpu::Error("character " + std::to_string(character) + ": " + modelOf(character).name +
+                         " has no clip " + (gait >= 0 ? std::to_string(gait) + " " : std::string()) +
+                         "that travels to use as its gait");
     command(character, at);
     Agent& agent = agents_[character];
-    const Gaits& gaits = gaits_[characters_[character].model];
-    agent.gait = gait >= 0 ? gait : gaits.walk;
-    if (agent.gait < 0 || static_cast<std::uint32_t>(agent.gait) >= library_.clipCount(characters_[character].model) ||
-        glm::length(library_.stride(characters_[character].model, static_cast<std::uint32_t>(agent.gait))) == 0.0f)
-        throw gpu::Error("character " + std::to_string(character) + ": " + modelOf(character).name +
-                         " has no clip that travels to use as its gait");
+    agent.gait = clip;
     agent.target = target;
     agent.rate = rate;
     agent.stage = Agent::Stage::Stand;
 }
 
-void Crowd::play(std::uint32_t character, std::uint32_t clip, float at, float fade, float rate) {
-    command(character, at);
-    if (clip >= library_.clipCount(characters_[character].model))
+void Crowd::play(std::uint32_t character, std::int32_t clip, float at, float fade, float rate) {
+    checkCharacter(character);
+    if (clip < 0 || static_cast<std::uint32_t>(clip) >= library_.clipCount(characters_[character].model))
         throw gpu::Error("character " + std::to_string(character) + ": " + modelOf(character).name + " has no clip " +
                          std::to_string(clip));
+    command(character, at);
     Agent& agent = agents_[character];
-    agent.gait = static_cast<std::int32_t>(clip);
+    agent.gait = clip;
     agent.rate = rate;
     agent.fade = fade;
     agent.stage = Agent::Stage::Play;

@@ -95,8 +95,9 @@ public:
     // `gait` (-1: the model's walk) at `rate` times its speed, turning on the way, and stop there.
     void moveTo(std::uint32_t character, glm::vec2 target, float at, std::int32_t gait = -1, float rate = 1.0f);
     // From time `at` on, crossfade over `fade` seconds to `clip` at `rate` and keep playing it; a clip
-    // with root motion carries the character forward along its heading.
-    void play(std::uint32_t character, std::uint32_t clip, float at, float fade = 0.3f, float rate = 1.0f);
+    // with root motion carries the character forward along its heading. Throws gpu::Error for a clip the
+    // model lacks (a negative one too: what SkinnedModel::findClip returns for a missing name).
+    void play(std::uint32_t character, std::int32_t clip, float at, float fade = 0.3f, float rate = 1.0f);
     // Plans every character's segments up to `time`. Going back in time replays the behaviours from
     // the start (commands given so far are forgotten).
     void advanceTo(float time);
@@ -129,6 +130,7 @@ private:
     void addCharacter(const Character& character);
     void startBehaviours();
     void replan(std::uint32_t character, float time);
+    void checkCharacter(std::uint32_t character) const;
     void command(std::uint32_t character, float at);
     PlanContext planContext(std::uint32_t character) const;
 

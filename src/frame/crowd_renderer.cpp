@@ -290,11 +290,13 @@ std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
 
 std::map<std::string, double> CrowdRenderer::memoryPerCharacter() const {
     const double n = std::max(crowd_.size(), 1u);
-    const double state = static_cast<double>(buffers_.characters().size + lists_.lodState().size +
-                                             lists_.impostorList().size + lists_.characterDraws().size);
+    const double state = static_cast<double>(buffers_.characters().size + animationPass_.segmentBytes() +
+                                             lists_.lodState().size + lists_.impostorList().size +
+                                             lists_.characterDraws().size);
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
-    const double fixed = static_cast<double>(pool_.bytes() + target_->bytes() + shadowMap_.bytes());
+    const double fixed =
+        static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + target_->bytes() + shadowMap_.bytes());
     return {{"state", state / n},
             {"bones", static_cast<double>(buffers_.bones().size) / n},
             {"mesh slots", meshSlots / n},

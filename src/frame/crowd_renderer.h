@@ -118,10 +118,10 @@ public:
     gpu::CullUniforms cullUniforms() const;
     // Device memory of the crowd's buffers, the method's resources and the render target.
     std::vector<skin::MemoryItem> memory() const;
-    // The same per character of the crowd, by kind: "state" (record, LOD state, impostor-list entry,
-    // the vs baseline's draw slot), "bones" (its bone block), "mesh slots" (visible lists, draws and
-    // the method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas
-    // shared by all), "fixed" (geometry, render target, shadow map).
+    // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
+    // impostor-list entry, the vs baseline's draw slot), "bones" (its bone block), "mesh slots" (visible
+    // lists, draws and the method's skinned vertices, sized for the mesh-level capacity), "atlas" (the
+    // impostor atlas shared by all), "fixed" (geometry, clip library, render target, shadow map).
     std::map<std::string, double> memoryPerCharacter() const;
 
 private:
