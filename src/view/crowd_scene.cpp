@@ -46,6 +46,7 @@ void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     options.method = method_;
     options.cull = cull_;
     options.shadows = shadows_;
+    options.animation = animation_;
     renderer_ = std::make_unique<frame::CrowdRenderer>(context_, *crowd_, options);
     scene_ = scene;
     notes_.insert(notes_.end(), notes.begin(), notes.end());

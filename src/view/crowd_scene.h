@@ -34,6 +34,8 @@ public:
     void setMethod(skin::Method method, VkExtent2D size);
     // Shadows on or off, now and for crowds rebuilt later.
     void setShadows(bool on) { shadows_ = on, renderer_->setShadows(on); }
+    // Where bone matrices come from (--animation), now and for crowds rebuilt later.
+    void setAnimation(render::AnimationPath path) { animation_ = path, renderer_->setAnimation(path); }
 
     frame::CrowdRenderer& renderer() { return *renderer_; }
     const frame::CrowdRenderer& renderer() const { return *renderer_; }
@@ -53,6 +55,7 @@ private:
     skin::Method method_;
     render::CullSettings cull_;
     bool shadows_;
+    render::AnimationPath animation_ = render::AnimationPath::Gpu;
     app::CrowdModels models_;
     std::unique_ptr<crowd::Crowd> crowd_;
     std::unique_ptr<frame::CrowdRenderer> renderer_;

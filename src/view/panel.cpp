@@ -138,6 +138,8 @@ void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
     if (changed) requests.cull = cull;
     bool shadows = state.shadows;
     if (ImGui::Checkbox("shadows", &shadows)) requests.shadows = shadows;
+    bool gpuAnimation = state.gpuAnimation;
+    if (ImGui::Checkbox("GPU animation", &gpuAnimation)) requests.gpuAnimation = gpuAnimation;
 }
 
 void Panel::drawCamera(const PanelState& state, PanelRequests& requests) {

@@ -24,6 +24,7 @@ struct PanelState {
     render::LodCounts lods;      // drawn in the newest frame, per level of detail
     render::CullSettings cull;
     bool shadows = true;
+    bool gpuAnimation = true;  // bone matrices from the GPU passes (else the CPU jobs)
     bool scenePath = false;
     skin::Method method = skin::Method::TwoPass;
     std::string model;
@@ -46,6 +47,7 @@ struct PanelRequests {
     std::optional<render::CullSettings> cull;  // LOD or culling switched
     std::optional<bool> scenePath;
     std::optional<bool> shadows;
+    std::optional<bool> gpuAnimation;
     bool resetCamera = false;
     bool screenshot = false;
 };

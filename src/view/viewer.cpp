@@ -52,6 +52,7 @@ Viewer::Viewer(const ViewerOptions& options)
       scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
              swapchain_.extent()) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
+    scene_.setAnimation(options.render.animation);
     controls_.scenePath = options.render.camera != render::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
     frameHome(true);
@@ -211,6 +212,8 @@ void Viewer::apply(const PanelRequests& requests) {
     if (requests.scenePath) controls_.scenePath = *requests.scenePath;
     if (requests.cull) scene_.renderer().setCull(*requests.cull);
     if (requests.shadows) scene_.setShadows(*requests.shadows);
+    if (requests.gpuAnimation)
+        scene_.setAnimation(*requests.gpuAnimation ? render::AnimationPath::Gpu : render::AnimationPath::Cpu);
     try {
         if (requests.method) {
             scene_.setMethod(*requests.method, swapchain_.extent());
@@ -308,6 +311,7 @@ PanelState Viewer::panelState() const {
     state.lods = history_.latestLods();
     state.cull = scene_.renderer().cull();
     state.shadows = scene_.renderer().shadows();
+    state.gpuAnimation = scene_.renderer().animation() == render::AnimationPath::Gpu;
     state.scenePath = controls_.scenePath;
     state.method = scene_.method();
     state.model = scene_.options().model;
