@@ -108,6 +108,8 @@ TEST(CrowdRenderCli, BadScenesAndLodSettingsAreRejected) {
     expectOneLineError("--mesh-capacity 0", "too small");
     expectOneLineError("--lod maybe", "--lod");
     expectOneLineError("--cull sometimes", "--cull");
+    expectOneLineError("--behaviour dance", "--behaviour");
+    expectOneLineError("--animation quantum", "--animation");
     expectOneLineError("--lod-hysteresis 0.9", "--lod-hysteresis");
     expectOneLineError("--model soldier:0", "weight");
     expectOneLineError("--model soldier,,horse", "empty model name");
@@ -132,6 +134,22 @@ TEST(CrowdRenderCli, MixedSceneReportsCharactersPerLodAndTheCullPass) {
     EXPECT_GT(j["median_triangles"].get<double>(), 0.0);
     std::filesystem::remove(png);
     std::filesystem::remove(json);
+}
+
+TEST(CrowdRenderCli, MarchAndMillScenesRunOnEitherAnimationPathWithValidationSilent) {
+    for (const char* scene : {"march", "mill"})
+        for (const char* animation : {"gpu", "cpu"}) {
+            const std::string json = tempFile(std::string(scene) + "-" + animation + ".json");
+            const test::ProgramResult r =
+                test::runProgram(kRender, std::string("--scene ") + scene + " --count 32 --frames 3 --start 5 --size 96x64 "
+                                          "--validation --animation " + animation + " --out /dev/null --json " + json);
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+            std::ifstream file(json);
+            const nlohmann::json j = nlohmann::json::parse(file);
+            EXPECT_EQ(j["animation"], std::string(scene) + ", " + animation + " animation");
+            std::filesystem::remove(json);
+        }
 }
 
 namespace {
