@@ -352,7 +352,10 @@ TEST(ViewerProgram, WindowLargerThanTheDeviceCanPresentIsShrunkWithValidationSil
     const test::ProgramResult r = test::runProgram(xvfbRun() + "sh", script);
     expectCleanRun(r);
     const render::Rgba8Image viewer = readPng(png);
-    EXPECT_NE(r.out.find("a 100x17000 window is larger than"), std::string::npos) << r.out;
+    // Two ways to shrink, both correct: the window's size limits (set from the device's largest extent)
+    // make the X server refuse the height outright, or, when the resize arrives before they take hold,
+    // the viewer sees 17,000 rows, notes "a 100x17000 window is larger than ..." and shrinks the window
+    // back. Which one happens is a race, so the test checks the outcome: the size below.
     EXPECT_EQ(viewer.width, 100u) << r.out;
     EXPECT_GE(viewer.height, 4096u) << "Vulkan guarantees 4,096-pixel images";
     EXPECT_LT(viewer.height, 17000u);
