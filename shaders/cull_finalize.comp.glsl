@@ -13,7 +13,6 @@ layout(std430, set = 0, binding = 4) buffer Frames { BucketFrame frames[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer Totals { DrawTotals totals; };
 layout(std430, set = 0, binding = 8) writeonly buffer BucketDraws { DrawIndexedCommand bucketDraws[]; };
 layout(std430, set = 0, binding = 9) writeonly buffer SkinDispatches { uvec4 skinDispatches[]; };
-layout(std430, set = 0, binding = 12) buffer Impostors { ImpostorFrame impostorFrame; };
 
 uint groupsFor(uint items, uint perGroup) { return min((items + perGroup - 1u) / perGroup, cull.limits.x); }
 
@@ -35,10 +34,5 @@ void main() {
     }
     totals.drawCount = drawBase;
     totals.skinnedVertices = vertexBase;
-    // The impostor level: one draw of six vertices (two triangles) per character of its list, not an
-    // instance each: instances of six vertices would leave most of every vertex-shader warp idle.
-    impostorFrame.vertexCount = 6u * impostorFrame.count;
-    impostorFrame.instanceCount = 1u;
-    impostorFrame.drawCount = 1u;
     totals.emitDispatch = uvec4(groupsFor(drawBase, CULL_WORKGROUP_SIZE), 1u, 1u, 0u);
 }

@@ -123,15 +123,19 @@ struct ImpostorModel {
 // The impostor level of a frame: culling counts its characters, finalize turns the count into one
 // instanced draw of a 6-index quad (the first five members are VkDrawIndexedIndirectCommand).
 struct ImpostorFrame {
-    uint vertexCount;    // 6 x count: two triangles a character, one draw (VkDrawIndirectCommand)
-    uint instanceCount;  // 1
-    uint firstVertex;
-    uint firstInstance;
-    uint unused3;
     uint count;          // characters drawn as impostors (in view)
     uint meshCount;      // characters culling sent to a mesh level (before the cap), visible or caster
     uint demoted;        // of those, sent to the impostor level because the mesh levels were full
-    uint drawCount;      // 1: the draw is issued with vkCmdDrawIndirectCount (see render/impostor_draw.cpp)
+    uint unused;
+};
+
+// Impostors are drawn as indexed quads (four vertices, six indices each) from one fixed index buffer
+// of IMPOSTOR_QUADS_PER_DRAW quads, so a frame issues one draw per that many impostors.
+#define IMPOSTOR_QUADS_PER_DRAW 262144u
+
+// The impostor draws of a frame, written after culling (render/impostor_draw.h).
+struct ImpostorDrawsHeader {
+    uint drawCount;  // draws below (the count of vkCmdDrawIndexedIndirectCount)
     uint unused0;
     uint unused1;
     uint unused2;

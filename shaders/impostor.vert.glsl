@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The impostor level: six vertices per character of the impostor list (vertex v draws corner v % 6
-// of character v / 6), a quad facing the eye
-// (spherical billboard over the model's pose sphere, turned by the character's heading) that shows
-// the atlas cell of its clip, phase and view direction. No bones, no skinned vertices: only the record.
+// The impostor level: four vertices per character of the impostor list (vertex v is corner v % 4 of
+// impostor v / 4; indexed quads share them, and the draw's cost follows the vertices), a quad facing
+// the eye (spherical billboard over the model's pose sphere, turned by the character's heading) that
+// shows the atlas cell of its clip, phase and view direction. No bones, no skinned vertices: only the
+// record.
 #include "gpu_types.h"
 #include "impostor_set.glsl.inc"
 #include "impostor_pose.glsl.inc"
@@ -22,10 +23,10 @@ layout(location = 4) out vec3 vWorld;
 vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.z - s * v.x); }
 
 void main() {
-    const vec2 corners[6] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
-    CharacterRecord character = characters[impostors[gl_VertexIndex / 6]];
+    const vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
+    CharacterRecord character = characters[impostors[gl_VertexIndex / 4]];
     ImpostorModel m = impostorModels[character.ids.x];
-    vec2 corner = corners[gl_VertexIndex % 6];
+    vec2 corner = corners[gl_VertexIndex % 4];
 
     float c = cos(character.placement.w);
     float s = sin(character.placement.w);

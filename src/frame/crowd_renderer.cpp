@@ -132,6 +132,7 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float t
         timer_.mark(cmd, "palette");
     }
     method_->recordSkinning(cmd, timer_);
+    if (impostorDraw_) impostorDraw_->recordDraws(cmd);
     const glm::mat4 light = lightViewProjection();  // the shadow pass draws with it, the scene samples with it
     recordShadows(cmd, slot, light);
     recordScene(cmd, slot, light);
@@ -284,6 +285,7 @@ std::vector<skin::MemoryItem> CrowdRenderer::memory() const {
                                            {"render target", target_->bytes()},
                                            {"shadow map", shadowMap_.bytes()}};
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
+    if (impostorDraw_) items.push_back({"impostor quad indices and draws", impostorDraw_->bytes()});
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }
@@ -295,8 +297,8 @@ std::map<std::string, double> CrowdRenderer::memoryPerCharacter() const {
                                              lists_.characterDraws().size);
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
-    const double fixed =
-        static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + target_->bytes() + shadowMap_.bytes());
+    const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + target_->bytes() +
+                                             shadowMap_.bytes() + (impostorDraw_ ? impostorDraw_->bytes() : 0u));
     return {{"state", state / n},
             {"bones", static_cast<double>(buffers_.bones().size) / n},
             {"mesh slots", meshSlots / n},

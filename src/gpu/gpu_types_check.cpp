@@ -24,10 +24,9 @@ static_assert(offsetof(DrawIndexedCommand, firstInstance) == offsetof(VkDrawInde
 // emitDispatch is read by vkCmdDispatchIndirect: 16-byte aligned after four uints.
 static_assert(sizeof(DrawTotals) == 32 && offsetof(DrawTotals, emitDispatch) == 16);
 static_assert(sizeof(ImpostorModel) == 48 && offsetof(ImpostorModel, views) == 16 && offsetof(ImpostorModel, square) == 32);
-// The first four members are what vkCmdDrawIndirect reads.
-static_assert(sizeof(ImpostorFrame) == 48 && offsetof(ImpostorFrame, drawCount) == 32 &&
-              offsetof(ImpostorFrame, firstInstance) == offsetof(VkDrawIndirectCommand, firstInstance) &&
-              offsetof(ImpostorFrame, count) == 20);
+// Written with atomics, one uint at a time; the draws follow the header as VkDrawIndexedIndirectCommands.
+static_assert(sizeof(ImpostorFrame) == 16 && offsetof(ImpostorFrame, demoted) == 8);
+static_assert(sizeof(ImpostorDrawsHeader) == 16);
 static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160);
 static_assert(sizeof(SkinPassParams) == 32);

@@ -1,12 +1,17 @@
 #include "render/impostor_draw.h"
 
+#include <algorithm>
+
 #include <cstddef>
 #include <span>
+#include <vector>
 
+#include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "impostor.frag.spv.h"
 #include "impostor.vert.spv.h"
+#include "impostor_draws.comp.spv.h"
 #include "render/render_target.h"
 
 namespace render {
@@ -20,6 +25,25 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
     : context_(context), lists_(lists), atlas_(atlas) {
     try {
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        // A fixed index buffer of IMPOSTOR_QUADS_PER_DRAW quads, whatever the crowd: (0, 1, 2), (0, 2, 3).
+        std::vector<std::uint32_t> indices(std::size_t{IMPOSTOR_QUADS_PER_DRAW} * 6);
+        for (std::uint32_t q = 0; q < IMPOSTOR_QUADS_PER_DRAW; ++q) {
+            const std::uint32_t quad[6] = {4 * q, 4 * q + 1, 4 * q + 2, 4 * q, 4 * q + 2, 4 * q + 3};
+            std::copy(quad, quad + 6, indices.begin() + static_cast<std::ptrdiff_t>(6 * q));
+        }
+        quad_ = gpu::createBufferWithData(context, std::as_bytes(std::span(indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                          "impostor quad indices");
+        maxDraws_ = static_cast<std::uint32_t>((lists.impostorList().size / 4 + IMPOSTOR_QUADS_PER_DRAW - 1) /
+                                               IMPOSTOR_QUADS_PER_DRAW);
+        maxDraws_ = std::max(maxDraws_, 1u);
+        draws_ = gpu::createBuffer(context, sizeof(gpu::ImpostorDrawsHeader) + maxDraws_ * sizeof(gpu::DrawIndexedCommand),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                                   gpu::MemoryUse::DeviceLocal, "impostor draws");
+        const gpu::BufferBinding drawBindings[] = {{storage, lists.impostorFrame().buffer}, {storage, draws_.buffer}};
+        drawsSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, drawBindings);
+        const VkDescriptorSetLayout drawsSetLayout = drawsSet_->layout();
+        drawsLayout_ = gpu::createPipelineLayout(context, {&drawsSetLayout, 1}, {});
+        drawsPipeline_ = gpu::createComputePipeline(context, impostor_draws_comp_spv, drawsLayout_, {});
         const gpu::BufferBinding bindings[] = {{storage, pool.modelTable().buffer},
                                                {storage, atlas.modelTable().buffer},
                                                {storage, crowd.characters().buffer},
@@ -48,7 +72,26 @@ void ImpostorDraw::release() {
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     pipeline_ = VK_NULL_HANDLE, layout_ = VK_NULL_HANDLE;
+    if (drawsPipeline_) vkDestroyPipeline(context_.device, drawsPipeline_, nullptr);
+    if (drawsLayout_) vkDestroyPipelineLayout(context_.device, drawsLayout_, nullptr);
+    drawsPipeline_ = VK_NULL_HANDLE, drawsLayout_ = VK_NULL_HANDLE;
     set_.reset();
+    drawsSet_.reset();
+    gpu::destroyBuffer(context_, draws_);
+    gpu::destroyBuffer(context_, quad_);
+}
+
+void ImpostorDraw::recordDraws(VkCommandBuffer cmd) const {
+    // The previous frame's indirect reads come first; culling's count is ready (the cull pass ends
+    // with a barrier to every later stage).
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, 0},
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    const VkDescriptorSet set = drawsSet_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, drawsLayout_, 0, 1, &set, 0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, drawsPipeline_);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
 }
 
 void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const {
@@ -59,8 +102,9 @@ void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const S
     // Six vertices per impostor in one draw, no index buffer. The Count form with a count of 1 rather
     // than vkCmdDrawIndirect: lavapipe (Mesa 22.3) kept the count buffer of the mesh draw before it and
     // drew nothing. Same cost on other devices.
-    vkCmdDrawIndirectCount(cmd, lists_.impostorFrame().buffer, 0, lists_.impostorFrame().buffer,
-                           offsetof(gpu::ImpostorFrame, drawCount), 1, sizeof(gpu::ImpostorFrame));
+    vkCmdBindIndexBuffer(cmd, quad_.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexedIndirectCount(cmd, draws_.buffer, sizeof(gpu::ImpostorDrawsHeader), draws_.buffer,
+                                  offsetof(gpu::ImpostorDrawsHeader, drawCount), maxDraws_, sizeof(gpu::DrawIndexedCommand));
 }
 
 }  // namespace render

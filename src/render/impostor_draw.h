@@ -1,7 +1,8 @@
 #pragma once
-// The impostor level's draw: one vkCmdDrawIndexedIndirect whose instance count culling wrote (a quad
-// per character of the frame's impostor list), textured from the atlas and lit like the meshes, inside the
-// colour pass after the mesh draws. It reads records only: no bones, no skinned vertices.
+// The impostor level's draw: indexed quads (four vertices each) for the characters of the frame's
+// impostor list, in one draw per IMPOSTOR_QUADS_PER_DRAW of them whose count culling decides, textured
+// from the atlas and lit like the meshes, inside the colour pass after the mesh draws. It reads records
+// only: no bones, no skinned vertices.
 #include <memory>
 
 #include <vulkan/vulkan.h>
@@ -26,8 +27,12 @@ public:
     ImpostorDraw(const ImpostorDraw&) = delete;
     ImpostorDraw& operator=(const ImpostorDraw&) = delete;
 
+    // Outside any render pass, after culling: this frame's draws, from culling's impostor count.
+    void recordDraws(VkCommandBuffer cmd) const;
     // Inside the colour pass (its viewport set), with the camera's scene set.
     void record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const;
+    // The fixed index buffer and the draw commands.
+    std::uint64_t bytes() const { return quad_.size + draws_.size; }
 
 private:
     void release();
@@ -35,7 +40,12 @@ private:
     const gpu::VulkanContext& context_;
     const DrawLists& lists_;
     const ImpostorAtlas& atlas_;
-    std::unique_ptr<gpu::DescriptorBundle> set_;
+    gpu::Buffer quad_;   // indices of IMPOSTOR_QUADS_PER_DRAW quads
+    gpu::Buffer draws_;  // ImpostorDrawsHeader, then up to maxDraws_ indexed draws
+    std::uint32_t maxDraws_ = 1;
+    std::unique_ptr<gpu::DescriptorBundle> set_, drawsSet_;
+    VkPipelineLayout drawsLayout_ = VK_NULL_HANDLE;
+    VkPipeline drawsPipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
