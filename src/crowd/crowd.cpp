@@ -139,6 +139,8 @@ void Crowd::addCharacter(const Character& c) {
     sealSegment(segments_.back(), library_, c.model);
     changed_.push_back(1u);
     lastChanged_.push_back(index);
+    nextDue_ = std::min(nextDue_, agents_.back().due);
+    added_ = true;
     ++generation_;
 }
 
@@ -173,17 +175,28 @@ void Crowd::advanceTo(float time) {
         cursors_.clear();
         cursorOffsets_.clear();
         changed_.clear();
+        nextDue_ = Agent::kNever;
         for (const Character& c : characters) addCharacter(c);
     }
     plannedTo_ = time;
+    // Nobody's plan runs out before `nextDue_` (an in-place crowd: never): no character to visit.
+    if (time < nextDue_ && !added_) {
+        lastChanged_.clear();
+        ++generation_;
+        return;
+    }
+    added_ = false;
     // Characters plan independently (their choices hash their own index), so any split of the work
     // gives the same crowd.
     WorkerPool::shared().parallelFor(size(), 256, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t c = begin; c < end; ++c) replan(c, time);
     });
     lastChanged_.clear();
-    for (std::uint32_t c = 0; c < size(); ++c)
+    nextDue_ = Agent::kNever;
+    for (std::uint32_t c = 0; c < size(); ++c) {
         if (changed_[c]) lastChanged_.push_back(c), changed_[c] = 0u;
+        nextDue_ = std::min(nextDue_, agents_[c].due);
+    }
     ++generation_;
 }
 
@@ -198,6 +211,7 @@ void Crowd::command(std::uint32_t character, float at) {
     // A crossfade in progress finishes first: a segment blends two clips, never three.
     agent.due = std::max(at, current.timing.x + current.timing.y);
     agent.commanded = true;
+    nextDue_ = std::min(nextDue_, agent.due);
 }
 
 // Commands check everything before they change anything: a refused one leaves the character as it was.
@@ -236,13 +250,20 @@ MotionState Crowd::stateAt(std::uint32_t index, float time) const {
 }
 
 void Crowd::poseRecord(std::uint32_t index, float time, gpu::CharacterRecord& record) const {
-    const MotionState state = stateAt(index, time);
+    writePose(stateAt(index, time), record);
+}
+
+void Crowd::writePose(const MotionState& state, gpu::CharacterRecord& record) {
     record.placement = glm::vec4(state.position, state.heading);
     record.ids.w = state.clipFrom | (state.clipTo << 16);
     record.pose = glm::vec4(state.phase, state.weight, 0.0f, 0.0f);
 }
 
 void Crowd::animateCharacter(std::uint32_t index, float time, std::span<gpu::BoneRows> out) const {
+    animateState(index, stateAt(index, time), out);
+}
+
+void Crowd::animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out) const {
     const Character& c = characters_[index];
     const std::uint32_t joints = library_.jointCount(c.model);
     // Per-thread scratch, reused by the pool's long-lived threads: once warm, animation allocates nothing.
@@ -251,7 +272,6 @@ void Crowd::animateCharacter(std::uint32_t index, float time, std::span<gpu::Bon
     from.resize(joints);
     to.resize(joints);
     modelSpace.resize(joints);
-    const MotionState state = stateAt(index, time);
     std::span<std::uint16_t> cursors(cursors_.data() + cursorOffsets_[index], 6u * joints);
     if (library_.clipCount(c.model) == 0) {
         for (std::uint32_t j = 0; j < joints; ++j) to[j] = models_[c.model]->skeleton.restPose[j];
@@ -276,8 +296,10 @@ void Crowd::animate(float time, std::span<gpu::BoneRows> out, std::span<const st
     // Chunks of 32 characters (tens of microseconds each) keep the handoff cost small and the cores even.
     (pool ? *pool : WorkerPool::shared()).parallelFor(size(), 32, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) {
-            animateCharacter(i, time, out.subspan(boneOffsets[i]));
-            if (!records.empty()) poseRecord(i, time, records[i]);
+            // The motion is evaluated once for both the bones and the record.
+            const MotionState state = stateAt(i, time);
+            animateState(i, state, out.subspan(boneOffsets[i]));
+            if (!records.empty()) writePose(state, records[i]);
         }
     });
 }

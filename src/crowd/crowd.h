@@ -130,6 +130,8 @@ private:
     void addCharacter(const Character& character);
     void startBehaviours();
     void replan(std::uint32_t character, float time);
+    void animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out) const;
+    static void writePose(const MotionState& state, gpu::CharacterRecord& record);
     void checkCharacter(std::uint32_t character) const;
     void command(std::uint32_t character, float at);
     PlanContext planContext(std::uint32_t character) const;
@@ -144,6 +146,8 @@ private:
     float plannedTo_ = 0.0f;
     std::vector<std::uint32_t> lastChanged_;
     std::vector<std::uint8_t> changed_;
+    float nextDue_ = Agent::kNever;  // the earliest time any character's plan runs out
+    bool added_ = false;             // characters added since the last full advance
     std::uint64_t generation_ = 0;
     // Key cursors of the sampling jobs, six per joint (two clips) per character: a cache of where each
     // track's keys were last found, private to the thread animating that character.
