@@ -87,19 +87,10 @@ TEST(GltfLoader, LinearRotationBendsTheTopRowAboutTheTip) {
 }
 
 TEST(GltfLoader, StepAndCubicSplineChannelsFollowTheSpecification) {
+    // STEP: the root jumps up by 1 m at t = 1 and holds its first key until then. CUBICSPLINE, zero
+    // tangents: the tip's scale eases from 1 to 3; at the midpoint it is 2.
     GltfBuilder b = test::stripCharacter();
-    const int times = b.floats({0.0f, 1.0f}, "SCALAR");
-    // STEP: the root jumps up by 1 m at t = 1 and holds its first key until then.
-    const int steps = b.floats({0, 0, 0, 0, 1, 0}, "VEC3");
-    // CUBICSPLINE, zero tangents: the tip's scale eases from 1 to 3; at the midpoint it is 2.
-    const int spline = b.floats({0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 3, 3, 3, 0, 0, 0}, "VEC3");
-    b.doc["animations"].push_back({{"name", "hop"},
-                                   {"samplers",
-                                    {{{"input", times}, {"output", steps}, {"interpolation", "STEP"}},
-                                     {{"input", times}, {"output", spline}, {"interpolation", "CUBICSPLINE"}}}},
-                                   {"channels",
-                                    {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}},
-                                     {{"sampler", 1}, {"target", {{"node", 2}, {"path", "scale"}}}}}}});
+    test::addHopAnimation(b);
     const model::SkinnedModel m = test::loadText(b.gltf());
     ASSERT_EQ(m.clips.size(), 2u);
     EXPECT_EQ(m.clips[1].channels[0].interpolation, anim::Interpolation::Step);

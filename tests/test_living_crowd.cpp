@@ -493,16 +493,7 @@ TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForBuiltInModelsMidCrossfade) {
 TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForStepAndCubicSplineClips) {
     // The test strip character with a LINEAR clip ("bend") and a STEP + CUBICSPLINE one ("hop").
     test::GltfBuilder b = test::stripCharacter();
-    const int times = b.floats({0.0f, 1.0f}, "SCALAR");
-    const int steps = b.floats({0, 0, 0, 0, 1, 0}, "VEC3");
-    const int spline = b.floats({0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 3, 3, 3, 0, 0, 0}, "VEC3");
-    b.doc["animations"].push_back({{"name", "hop"},
-                                   {"samplers",
-                                    {{{"input", times}, {"output", steps}, {"interpolation", "STEP"}},
-                                     {{"input", times}, {"output", spline}, {"interpolation", "CUBICSPLINE"}}}},
-                                   {"channels",
-                                    {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}},
-                                     {{"sampler", 1}, {"target", {{"node", 2}, {"path", "scale"}}}}}}});
+    test::addHopAnimation(b);
     const model::SkinnedModel strip = test::loadText(b.gltf());
     crowd::Crowd crowd = crossfadingCrowd({&strip}, 16, 1.6f);
     const PaletteError e = comparePalettes(*context, crowd, 1.6f);

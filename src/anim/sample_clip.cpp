@@ -4,21 +4,17 @@
 #include <cassert>
 #include <cmath>
 
+#include "anim/keyframes.h"
+
 namespace anim {
 namespace {
 
 // Index of the key at or before t (clamped), and the blend factor towards the next key.
-struct KeySpan {
-    std::size_t key;
-    float blend;
-    float interval;
-};
-
 KeySpan findKeys(const std::vector<float>& times, float t) {
     if (times.size() < 2 || t <= times.front()) return {0, 0.0f, 0.0f};
-    if (t >= times.back()) return {times.size() - 1, 0.0f, 0.0f};
+    if (t >= times.back()) return {static_cast<std::uint32_t>(times.size() - 1), 0.0f, 0.0f};
     const auto next = std::upper_bound(times.begin(), times.end(), t);
-    const std::size_t key = static_cast<std::size_t>(next - times.begin()) - 1;
+    const auto key = static_cast<std::uint32_t>(next - times.begin()) - 1;
     const float interval = times[key + 1] - times[key];
     return {key, (t - times[key]) / interval, interval};
 }
@@ -32,23 +28,13 @@ glm::vec4 slerpShortest(const glm::vec4& a, const glm::vec4& b, float s) {
     return {q.x, q.y, q.z, q.w};
 }
 
-// Hermite spline between keys k and k+1 as glTF defines CUBICSPLINE (values are triplets).
-glm::vec4 cubicSpline(const std::vector<glm::vec4>& v, const KeySpan& span) {
-    const float s = span.blend, s2 = s * s, s3 = s2 * s;
-    const glm::vec4 p0 = v[span.key * 3 + 1];
-    const glm::vec4 m0 = v[span.key * 3 + 2] * span.interval;
-    const glm::vec4 p1 = v[(span.key + 1) * 3 + 1];
-    const glm::vec4 m1 = v[(span.key + 1) * 3 + 0] * span.interval;
-    return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
-}
-
 glm::vec4 sampleChannel(const Channel& channel, float t) {
     const KeySpan span = findKeys(channel.times, t);
     const bool lastKey = span.key + 1 >= channel.times.size();
     switch (channel.interpolation) {
         case Interpolation::CubicSpline: {
             if (lastKey || span.blend == 0.0f) return channel.values[span.key * 3 + 1];
-            const glm::vec4 value = cubicSpline(channel.values, span);
+            const glm::vec4 value = cubicSpline(channel.values.data(), span);
             if (channel.path != ChannelPath::Rotation) return value;
             // Between opposite keys (q and -q, one rotation) the spline can pass through zero, which
             // has no direction: there the rotation follows the short arc between the keys instead.

@@ -4,16 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "anim/keyframes.h"
 #include "anim/sample_clip.h"
 
 namespace anim {
 namespace {
-
-struct KeySpan {
-    std::uint32_t key;  // at or before the time (clamped to the ends)
-    float blend;        // towards the next key
-    float interval;     // seconds between the two keys
-};
 
 // The span holding t: first the cursor's span and the one after it, then a binary search.
 KeySpan findKeys(const float* times, std::uint32_t count, float t, std::uint16_t& cursor) {
@@ -30,16 +25,6 @@ KeySpan findKeys(const float* times, std::uint32_t count, float t, std::uint16_t
     cursor = static_cast<std::uint16_t>(std::min<std::uint32_t>(key, std::numeric_limits<std::uint16_t>::max()));
     const float interval = times[key + 1] - times[key];
     return {key, (t - times[key]) / interval, interval};
-}
-
-// Hermite spline between keys k and k+1 as glTF defines CUBICSPLINE (values are triplets).
-glm::vec4 cubicSpline(const glm::vec4* v, const KeySpan& span) {
-    const float s = span.blend, s2 = s * s, s3 = s2 * s;
-    const glm::vec4 p0 = v[span.key * 3 + 1];
-    const glm::vec4 m0 = v[span.key * 3 + 2] * span.interval;
-    const glm::vec4 p1 = v[(span.key + 1) * 3 + 1];
-    const glm::vec4 m1 = v[(span.key + 1) * 3 + 0] * span.interval;
-    return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
 }
 
 glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,

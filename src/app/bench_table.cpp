@@ -111,13 +111,18 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
     io::writeFile(path, file.str());
 }
 
-void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
+nlohmann::json benchJsonHeader(const BenchMeta& meta) {
     nlohmann::json json;
     json["device"] = meta.device;
     json["driver"] = meta.driver;
     json["commit"] = meta.commit;
     json["date"] = meta.date;
     json["command"] = meta.command;
+    return json;
+}
+
+void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results) {
+    nlohmann::json json = benchJsonHeader(meta);
     json["frames"] = meta.frames;
     json["warmup"] = meta.warmup;
     json["size"] = {meta.width, meta.height};

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "app/report.h"
 
 namespace app {
@@ -47,5 +49,7 @@ void printPassTable(const std::vector<BenchResult>& results);
 
 void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results);
 void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results);
+// What every benchmark JSON starts with: device, driver, commit, date, command.
+nlohmann::json benchJsonHeader(const BenchMeta& meta);
 
 }  // namespace app

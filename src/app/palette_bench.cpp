@@ -107,12 +107,7 @@ void printPaletteTable(const std::vector<PaletteRow>& rows, const std::string& m
 
 void writePaletteJson(const std::string& path, const BenchMeta& meta, const std::string& model,
                       const std::vector<PaletteRow>& rows) {
-    nlohmann::json json;
-    json["device"] = meta.device;
-    json["driver"] = meta.driver;
-    json["commit"] = meta.commit;
-    json["date"] = meta.date;
-    json["command"] = meta.command;
+    nlohmann::json json = benchJsonHeader(meta);
     json["model"] = model;
     json["crowd"] = "mill behaviour: standing, walking, running, crossfading";
     json["cpu_clock"] = "wall clock, median of runs after a warm-up run";

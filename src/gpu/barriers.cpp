@@ -4,6 +4,11 @@ namespace gpu {
 
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, Access before, Access after,
                   VkImageLayout oldLayout, VkImageLayout newLayout) {
+    imageBarrier(cmd, image, {aspect, 0, 1, 0, 1}, before, after, oldLayout, newLayout);
+}
+
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, Access before,
+                  Access after, VkImageLayout oldLayout, VkImageLayout newLayout) {
     VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     barrier.srcStageMask = before.stage;
     barrier.srcAccessMask = before.access;
@@ -14,7 +19,7 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
     barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = image;
-    barrier.subresourceRange = {aspect, 0, 1, 0, 1};
+    barrier.subresourceRange = range;
     VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dependency.imageMemoryBarrierCount = 1;
     dependency.pImageMemoryBarriers = &barrier;

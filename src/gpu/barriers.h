@@ -12,6 +12,9 @@ struct Access {
 
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, Access before, Access after,
                   VkImageLayout oldLayout, VkImageLayout newLayout);
+// The same over a range of mip levels and array layers (the first form: mip 0, layer 0).
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, Access before,
+                  Access after, VkImageLayout oldLayout, VkImageLayout newLayout);
 void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, Access before, Access after);
 
 }  // namespace gpu

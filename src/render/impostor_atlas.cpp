@@ -55,20 +55,8 @@ gpu::Access colourWrite() {
 
 void transition(VkCommandBuffer cmd, VkImage image, std::uint32_t firstMip, std::uint32_t mips, gpu::Access before,
                 gpu::Access after, VkImageLayout from, VkImageLayout to) {
-    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = before.stage;
-    barrier.srcAccessMask = before.access;
-    barrier.dstStageMask = after.stage;
-    barrier.dstAccessMask = after.access;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, firstMip, mips, 0, VK_REMAINING_ARRAY_LAYERS};
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.imageMemoryBarrierCount = 1;
-    dependency.pImageMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    gpu::imageBarrier(cmd, image, {VK_IMAGE_ASPECT_COLOR_BIT, firstMip, mips, 0, VK_REMAINING_ARRAY_LAYERS}, before,
+                      after, from, to);
 }
 
 }  // namespace

@@ -201,4 +201,17 @@ model::SkinnedModel loadBytes(const std::vector<std::uint8_t>& bytes, std::vecto
     return model::loadGltfFromMemory(bytes, "test.gltf", {}, notes);
 }
 
+void addHopAnimation(GltfBuilder& b) {
+    const int times = b.floats({0.0f, 1.0f}, "SCALAR");
+    const int steps = b.floats({0, 0, 0, 0, 1, 0}, "VEC3");
+    const int spline = b.floats({0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 3, 3, 3, 0, 0, 0}, "VEC3");
+    b.doc["animations"].push_back({{"name", "hop"},
+                                   {"samplers",
+                                    {{{"input", times}, {"output", steps}, {"interpolation", "STEP"}},
+                                     {{"input", times}, {"output", spline}, {"interpolation", "CUBICSPLINE"}}}},
+                                   {"channels",
+                                    {{{"sampler", 0}, {"target", {{"node", 1}, {"path", "translation"}}}},
+                                     {{"sampler", 1}, {"target", {{"node", 2}, {"path", "scale"}}}}}}});
+}
+
 }  // namespace test

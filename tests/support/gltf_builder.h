@@ -45,6 +45,9 @@ std::vector<float> quatZ(float degrees);
 // says a skinned mesh ignores. Material 0 is (0.8, 0.2, 0.1, 1). Animation 0 "bend" turns the tip
 // about z: 0, 45 and 90 degrees at 0, 0.5 and 1 s (LINEAR).
 GltfBuilder stripCharacter();
+// Adds animation "hop" to the strip: a STEP channel that lifts the root by 1 m at t = 1 (holding its
+// first key until then) and a CUBICSPLINE channel, zero tangents, easing the tip's scale from 1 to 3.
+void addHopAnimation(GltfBuilder& b);
 
 // The strip's primitive (mesh 0, primitive 0), for tests that change it.
 nlohmann::json& stripPrimitive(GltfBuilder& b);
