@@ -9,7 +9,7 @@
 
 #include "app/crowd_app.h"
 #include "crowd/cull_reference.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "model/procedural_models.h"
 #include "render/camera_path.h"
 #include "support/gpu_test.h"
@@ -79,7 +79,7 @@ crowd::Crowd gridCrowd(const model::SkinnedModel& model, std::uint32_t count) {
 }
 
 // The GPU's visible lists of the last frame, per bucket, sorted (atomics append in any order).
-crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const frame::CrowdRenderer& renderer) {
+crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const app::CrowdRenderer& renderer) {
     const render::DrawLists& lists = renderer.drawLists();
     const std::vector<std::byte> frames = test::readBuffer(context, lists.bucketFrames());
     const std::vector<std::byte> visible = test::readBuffer(context, lists.visible());
@@ -98,7 +98,7 @@ crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const fr
     return result;
 }
 
-std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const frame::CrowdRenderer& renderer) {
+std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const app::CrowdRenderer& renderer) {
     const std::vector<std::byte> bytes = test::readBuffer(context, renderer.drawLists().lodState());
     std::vector<std::uint32_t> state(renderer.buffers().characterCount());
     std::memcpy(state.data(), bytes.data(), state.size() * 4);
@@ -127,12 +127,12 @@ float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, 
 TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
     crowd::Crowd crowd = gridCrowd(soldier, 900);
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {160, 90};
     options.method = skin::Method::Compute;
     options.cull.lodThresholds[0] = 30.0f;  // sizes a 90-pixel image shows, so every level is used
     options.cull.lodThresholds[1] = 12.0f;
-    frame::CrowdRenderer renderer(*context, crowd, options);
+    app::CrowdRenderer renderer(*context, crowd, options);
     const render::CrowdShape shape = app::crowdShape(crowd);
     std::set<std::uint32_t> visibleCounts, levelsUsed, coarsestCounts;
     for (float seconds : {0.0f, 3.0f, 6.0f, 9.0f, 12.0f, 15.0f, 18.0f, 20.0f}) {
@@ -179,11 +179,11 @@ namespace {
 render::Rgba8Image renderAt(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::CullSettings& cull,
                             const render::Camera& camera, skin::Method method = skin::Method::Compute,
                             render::LodCounts* lods = nullptr) {
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {192, 108};
     options.method = method;
     options.cull = cull;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     renderer.camera = camera;
     renderer.renderFrame(1.25f);
     render::Rgba8Image image = renderer.readback();
@@ -248,11 +248,11 @@ TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) 
         return c;
     };
     crowd::Crowd crowd(soldier, {placeAt(0.0f), placeAt(-1.01f * radius), placeAt(-0.99f * radius)});
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {96, 64};
     options.method = skin::Method::Compute;
     options.shadows = false;  // the view alone decides (with shadows, casters outside it are kept)
-    frame::CrowdRenderer renderer(*context, crowd, options);
+    app::CrowdRenderer renderer(*context, crowd, options);
     renderer.camera = camera;
     renderer.renderFrame(0.0f);
     renderer.finish();

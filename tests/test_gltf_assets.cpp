@@ -11,7 +11,7 @@
 
 #include "app/crowd_app.h"
 #include "model/gltf_loader.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "skin/cpu_skinning.h"
 #include "support/gltf_reference.h"
 #include "support/gpu_test.h"
@@ -190,12 +190,12 @@ std::vector<crowd::Character> mixedCharacters(const model::SkinnedModel& model, 
 // Largest distance of a method's skinned vertices from the CPU reference, over every character.
 double gpuError(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method) {
     const model::SkinnedModel& m = crowd.model(0);
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
     options.cull.mode = render::CullMode::Off;  // every character, at full detail
     options.cull.lod = false;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
     renderer.finish();
@@ -216,10 +216,10 @@ double gpuError(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Met
 
 render::Rgba8Image renderImage(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
                                float time = 0.5f) {
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     renderer.renderFrame(time);
     return renderer.readback();
 }

@@ -7,7 +7,7 @@
 
 #include "app/crowd_app.h"
 #include "model/procedural_models.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "skin/cpu_skinning.h"
 #include "skin/fragment_skinning.h"
 #include "support/gpu_test.h"
@@ -47,12 +47,12 @@ struct SkinError {
 SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
                          crowd::Crowd crowd, std::uint32_t maxTargetDimension, skin::Method method,
                          const render::CullSettings& cull = fullDetail()) {
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
     options.maxTargetDimension = maxTargetDimension;
     options.cull = cull;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
     renderer.finish();
@@ -144,10 +144,10 @@ TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
 TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
     const model::SkinnedModel soldier = model::makeSoldier(1);
     crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {32, 32};
     options.maxTargetDimension = 64;
-    frame::CrowdRenderer renderer(*context, crowd, options);
+    app::CrowdRenderer renderer(*context, crowd, options);
     const auto& layout = static_cast<skin::FragmentSkinning&>(renderer.method()).layout();
     EXPECT_GT(layout.tileCount, 1u);
     for (std::uint32_t t = 0; t < layout.tileCount; ++t) {
@@ -164,10 +164,10 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
     characters[1] = {walk, 0.2f, 1.0f, glm::vec3(4, 0, 0), 0.0f};  // same phase, elsewhere
     characters[2] = {walk, 0.6f, 1.0f, glm::vec3(8, 0, 0), 0.0f};  // other phase
     crowd::Crowd crowd(soldier, characters);
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {32, 32};
     options.cull = fullDetail();
-    frame::CrowdRenderer renderer(*context, crowd, options);
+    app::CrowdRenderer renderer(*context, crowd, options);
     renderer.renderFrame(0.3f);
     renderer.finish();
     const auto n = static_cast<std::uint32_t>(soldier.vertices.size());
@@ -190,10 +190,10 @@ namespace {
 
 render::Rgba8Image renderScene(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
                                std::uint32_t frames) {
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {192, 128};
     options.method = method;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     for (std::uint32_t f = 0; f < frames; ++f) renderer.renderFrame(app::frameTime(f));
     return renderer.readback();
 }

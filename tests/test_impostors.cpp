@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "app/crowd_app.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "render/camera_path.h"
 #include "render/impostor_cell.h"
 #include "render/impostor_pose.h"
@@ -108,7 +108,7 @@ struct Renders {
     render::Rgba8Image mesh, impostor;
 };
 
-Renders renderBoth(frame::CrowdRenderer& renderer, const render::Camera& camera, float time) {
+Renders renderBoth(app::CrowdRenderer& renderer, const render::Camera& camera, float time) {
     render::CullSettings cull = renderer.cull();
     Renders result;
     for (const bool impostors : {false, true}) {
@@ -117,7 +117,7 @@ Renders renderBoth(frame::CrowdRenderer& renderer, const render::Camera& camera,
         renderer.camera = camera;
         renderer.renderFrame(time);
         renderer.finish();
-        const std::vector<frame::FrameStats> stats = renderer.takeStats();
+        const std::vector<app::FrameStats> stats = renderer.takeStats();
         // Every soldier at the level asked for: LOD 2 (meshes), or impostors.
         EXPECT_EQ(impostors ? stats.back().lods.impostors : stats.back().lods.characters[2], 6u);
         (impostors ? result.impostor : result.mesh) = renderer.readback();
@@ -144,14 +144,14 @@ TEST_F(GpuTest, ImpostorMatchesTheMeshAtTheSwitchSize) {
     const model::SkinnedModel soldier = app::loadModel("soldier", 1);
     crowd::Crowd lit(soldier, row(soldier, 1.0f));
     crowd::Crowd dim(soldier, row(soldier, 0.6f));
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {320, 120};
     options.method = skin::Method::Compute;
     options.cull.impostors = true;  // bake once; renderBoth switches levels
     options.cull.hysteresis = 0.0f;  // the level follows the threshold at once
-    frame::CrowdRenderer litRenderer(*context, lit, options);
+    app::CrowdRenderer litRenderer(*context, lit, options);
     options.atlas = litRenderer.impostorAtlas();
-    frame::CrowdRenderer dimRenderer(*context, dim, options);
+    app::CrowdRenderer dimRenderer(*context, dim, options);
     for (const float elevation : {8.0f, 35.0f}) {
         for (const float time : {0.4f, 1.3f}) {
             const render::Camera camera = cameraAt(soldier, elevation, 31.0f);
@@ -213,13 +213,13 @@ TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
     one[0].timeOffset = 0.0f;
     one[0].position = glm::vec3(0.0f);
     crowd::Crowd crowd(soldier, one);
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {96, 96};
     options.method = skin::Method::Compute;
     options.cull.impostors = true;
     options.cull.impostorThreshold = 49.0f;
     options.cull.hysteresis = 0.0f;
-    frame::CrowdRenderer renderer(*context, crowd, options);
+    app::CrowdRenderer renderer(*context, crowd, options);
     renderer.camera = cameraAt(soldier, 20.0f, 40.0f);
     const float duration = soldier.clips[one[0].clip].duration;
     auto picture = [&](float phase) {
@@ -241,14 +241,14 @@ TEST_F(GpuTest, MixedLevelsMatchTheAllMeshImageInTheNearField) {
     app::SceneOptions scene;
     scene.count = 400;
     crowd::Crowd crowd(soldier, app::buildCharacters(soldier, scene));
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {320, 180};
     options.method = skin::Method::Compute;
     options.cull.lodThresholds[0] = 22.0f;
     options.cull.lodThresholds[1] = 17.0f;
     options.cull.impostorThreshold = 14.0f;
     options.cull.hysteresis = 0.0f;
-    frame::CrowdRenderer renderer(*context, crowd, options);
+    app::CrowdRenderer renderer(*context, crowd, options);
     const render::CrowdShape shape = app::crowdShape(crowd);
     render::Rgba8Image images[2];
     for (const bool impostors : {false, true}) {

@@ -453,12 +453,12 @@ struct PaletteError {
 };
 
 PaletteError comparePalettes(const gpu::VulkanContext& context, crowd::Crowd& crowd, float time) {
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {64, 64};
     options.method = skin::Method::Compute;
     options.cull.mode = render::CullMode::Off;
     options.shadows = false;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     renderer.renderFrame(time);
     renderer.finish();
     const std::vector<std::byte> bytes = test::readBuffer(context, renderer.buffers().bones());
@@ -518,11 +518,11 @@ TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForTheSharedGltfAssets) {
 
 render::Rgba8Image renderMill(const gpu::VulkanContext& context, render::AnimationPath path, float time) {
     crowd::Crowd crowd = millCrowd(96, 2);
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {160, 96};
     options.method = skin::Method::Compute;
     options.animation = path;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     // A few frames before `time`, so segment uploads of several generations are exercised.
     for (float t : {time - 3.0f, time - 1.0f, time - kFrame, time}) {
         renderer.camera = render::cameraOnPath(render::CameraPath::FlyOver, app::crowdShape(crowd), 160.0f / 96.0f, t);

@@ -5,8 +5,8 @@
 
 namespace {
 
-frame::FrameStats stats(double intervalMs, double animateMs = 1.0) {
-    frame::FrameStats result;
+app::FrameStats stats(double intervalMs, double animateMs = 1.0) {
+    app::FrameStats result;
     result.intervalMs = intervalMs;
     result.planMs = 0.25;
     result.animateMs = animateMs;
@@ -40,6 +40,6 @@ TEST(Report, RecentFramesKeepsTheLastOnesInOrderAfterTheSkippedOnes) {
     recent.add({});
     recent.add({stats(1.0, 6), stats(1.0, 7)});
     std::vector<double> kept;
-    for (const frame::FrameStats& f : recent.frames()) kept.push_back(f.animateMs);
+    for (const app::FrameStats& f : recent.frames()) kept.push_back(f.animateMs);
     EXPECT_EQ(kept, (std::vector<double>{5, 6, 7}));
 }

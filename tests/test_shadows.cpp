@@ -7,7 +7,7 @@
 
 #include "app/crowd_app.h"
 #include "crowd/cull_reference.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "render/shadow_map.h"
 #include "support/gpu_test.h"
 
@@ -36,11 +36,11 @@ Shot renderSoldier(const gpu::VulkanContext& context, const model::SkinnedModel&
     crowd::Character c;
     c.clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
     crowd::Crowd crowd(soldier, {c});
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {160, 120};
     options.method = skin::Method::Compute;
     options.shadows = shadows;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     renderer.camera.eye = {0.0f, 5.0f, 6.0f};
     renderer.camera.target = {0.0f, 0.5f, 0.0f};
     renderer.renderFrame(time);

@@ -146,8 +146,8 @@ TEST(ViewerCamera, CenterOnOrbitsTheCharacterFromAFewHeightsAway) {
 // ---------------------------------------------------------------------------------------------
 // Frame statistics
 
-frame::FrameStats frameStats(double intervalMs, double skinMs) {
-    frame::FrameStats stats;
+app::FrameStats frameStats(double intervalMs, double skinMs) {
+    app::FrameStats stats;
     stats.intervalMs = intervalMs;
     stats.animateMs = 1.0;
     stats.recordMs = 0.5;

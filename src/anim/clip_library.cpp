@@ -5,7 +5,7 @@
 
 #include "anim/affine.h"
 #include "anim/skinning_matrices.h"
-#include "gpu/vulkan_error.h"
+#include "gpu/error.h"
 
 namespace anim {
 namespace {

@@ -1,7 +1,7 @@
 #include "app/benchmark_run.h"
 
 #include "app/crowd_app.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "gpu/vulkan_context.h"
 
 namespace app {
@@ -17,7 +17,7 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     crowd::Crowd crowd = buildCrowd(models, scene);
     const std::uint32_t meshCapacity = options.scene.cull.impostors ? options.scene.meshCapacity : 0u;
     checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
-    frame::RendererOptions rendererOptions;
+    app::RendererOptions rendererOptions;
     rendererOptions.meshCapacity = meshCapacity;
     rendererOptions.atlas = options.atlas;
     rendererOptions.size = options.size;
@@ -26,7 +26,7 @@ RunSummary runScenario(const gpu::VulkanContext& context, const CrowdModels& mod
     rendererOptions.shadows = options.scene.shadows;
     rendererOptions.animation = options.scene.animation;
     rendererOptions.passClock = options.passClock;
-    frame::CrowdRenderer renderer(context, crowd, rendererOptions);
+    app::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     const std::uint32_t total = options.warmup + options.frames;

@@ -9,7 +9,7 @@
 #include "app/options.h"
 #include "crowd/crowd.h"
 #include "model/skinned_model.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "render/camera_path.h"
 #include "skin/cpu_skinning.h"
 

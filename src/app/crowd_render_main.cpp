@@ -16,7 +16,7 @@
 #include "io/output_file.h"
 #include "io/standard_output.h"
 #include "model/obj_export.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "render/png_writer.h"
 
 namespace {
@@ -100,14 +100,14 @@ int run(const app::RenderOptions& options) {
     const std::uint32_t meshCapacity = options.cull.impostors ? options.meshCapacity : 0u;
     app::checkCrowdFits(context, crowd, options.method, options.size, meshCapacity);
 
-    frame::RendererOptions rendererOptions;
+    app::RendererOptions rendererOptions;
     rendererOptions.meshCapacity = meshCapacity;
     rendererOptions.size = options.size;
     rendererOptions.method = options.method;
     rendererOptions.cull = options.cull;
     rendererOptions.shadows = options.shadows;
     rendererOptions.animation = options.animation;
-    frame::CrowdRenderer renderer(context, crowd, rendererOptions);
+    app::CrowdRenderer renderer(context, crowd, rendererOptions);
     const render::CrowdShape shape = app::crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     app::RecentFrames recent(kSummarizedFrames, std::min(5u, options.frames / 4));  // warm-up left out

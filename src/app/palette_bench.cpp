@@ -8,7 +8,7 @@
 
 #include "app/report.h"
 #include "crowd/worker_pool.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
 
@@ -43,7 +43,7 @@ double cpuPaletteMs(const crowd::Crowd& crowd, float time, crowd::WorkerPool& po
 // vs-instanced skins while drawing and needs no skinned buffer; a 64x64 image keeps the draw small.
 void gpuPaletteMs(const gpu::VulkanContext& context, crowd::Crowd& crowd, const PaletteBenchOptions& options,
                   PaletteRow& row) {
-    frame::RendererOptions renderer;
+    app::RendererOptions renderer;
     renderer.size = {64, 64};
     renderer.method = skin::Method::VertexShaderInstanced;
     renderer.cull.mode = render::CullMode::Off;
@@ -51,7 +51,7 @@ void gpuPaletteMs(const gpu::VulkanContext& context, crowd::Crowd& crowd, const 
     renderer.shadows = false;
     renderer.animation = render::AnimationPath::Gpu;
     renderer.passClock = options.clock;
-    frame::CrowdRenderer frames(context, crowd, renderer);
+    app::CrowdRenderer frames(context, crowd, renderer);
     const std::uint32_t total = options.warmup + options.frames;
     for (std::uint32_t f = 0; f < total; ++f) frames.renderFrame(options.time + static_cast<float>(f) / 60.0f);
     frames.finish();

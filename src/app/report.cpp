@@ -21,7 +21,7 @@ double percentile(std::vector<double> values, double fraction) {
     return values[below] + (values[above] - values[below]) * (position - static_cast<double>(below));
 }
 
-RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t warmup) {
+RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t warmup) {
     RunSummary summary;
     summary.frames = static_cast<std::uint32_t>(stats.size());
     // Never leave every frame out: a short run still reports its last frames.
@@ -30,7 +30,7 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
     std::vector<double> visible[LOD_COUNT];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
-        const frame::FrameStats& frame = stats[i];
+        const app::FrameStats& frame = stats[i];
         if (frame.intervalMs > 0.0) intervals.push_back(frame.intervalMs);
         plan.push_back(frame.planMs);
         animate.push_back(frame.animateMs);
@@ -66,8 +66,8 @@ RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t 
     return summary;
 }
 
-void RecentFrames::add(std::vector<frame::FrameStats> frames) {
-    for (frame::FrameStats& frame : frames) {
+void RecentFrames::add(std::vector<app::FrameStats> frames) {
+    for (app::FrameStats& frame : frames) {
         if (skip_ > 0) {
             --skip_;
         } else if (ring_.size() < capacity_) {
@@ -79,8 +79,8 @@ void RecentFrames::add(std::vector<frame::FrameStats> frames) {
     }
 }
 
-std::vector<frame::FrameStats> RecentFrames::frames() const {
-    std::vector<frame::FrameStats> ordered(ring_.begin() + static_cast<std::ptrdiff_t>(next_), ring_.end());
+std::vector<app::FrameStats> RecentFrames::frames() const {
+    std::vector<app::FrameStats> ordered(ring_.begin() + static_cast<std::ptrdiff_t>(next_), ring_.end());
     ordered.insert(ordered.end(), ring_.begin(), ring_.begin() + static_cast<std::ptrdiff_t>(next_));
     return ordered;
 }

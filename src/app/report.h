@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/options.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "skin/skinning_method.h"
 
 namespace gpu { class VulkanContext; }
@@ -42,7 +42,7 @@ struct RunSummary {
     std::string device;
     std::string driver;
     std::vector<skin::MemoryItem> memory;
-    // Device bytes per character of the crowd, by kind (frame::CrowdRenderer::memoryPerCharacter).
+    // Device bytes per character of the crowd, by kind (app::CrowdRenderer::memoryPerCharacter).
     std::map<std::string, double> memoryPerCharacter;
     double atlasBakeMs = 0.0;  // 0: no impostor atlas
 };
@@ -54,7 +54,7 @@ double median(std::vector<double> values);
 double percentile(std::vector<double> values, double fraction);
 
 // Frames before `warmup` are left out of every median.
-RunSummary summarize(const std::vector<frame::FrameStats>& stats, std::uint32_t warmup);
+RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t warmup);
 
 // The statistics of at most `capacity` frames, the most recent, after leaving out the first `skip`:
 // a long run (crowd-render --frames 1000000) summarizes its last frames in bounded memory instead of
@@ -63,14 +63,14 @@ class RecentFrames {
 public:
     RecentFrames(std::size_t capacity, std::uint64_t skip) : capacity_(capacity), skip_(skip) {}
     // Frames in order, as CrowdRenderer::takeStats() hands them over.
-    void add(std::vector<frame::FrameStats> frames);
+    void add(std::vector<app::FrameStats> frames);
     // The kept frames, oldest first.
-    std::vector<frame::FrameStats> frames() const;
+    std::vector<app::FrameStats> frames() const;
 
 private:
     std::size_t capacity_;
     std::uint64_t skip_;
-    std::vector<frame::FrameStats> ring_;
+    std::vector<app::FrameStats> ring_;
     std::size_t next_ = 0;  // where the next frame goes once the ring is full
 };
 

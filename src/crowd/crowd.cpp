@@ -13,7 +13,7 @@
 #include "anim/sampling_job.h"
 #include "crowd/worker_pool.h"
 #include "model/measure_root_motion.h"
-#include "gpu/vulkan_error.h"
+#include "gpu/error.h"
 
 namespace crowd {
 

@@ -98,16 +98,21 @@ Buffer createBufferWithData(const VulkanContext& context, std::span<const std::b
     Buffer result;
     try {
         result = createBuffer(context, data.size(), usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::DeviceLocal, what);
-        runOneShot(context, [&](VkCommandBuffer cmd) {
-            const VkBufferCopy region{0, 0, data.size()};
-            vkCmdCopyBuffer(cmd, staging.buffer, result.buffer, 1, &region);
-        });
     } catch (...) {
         destroyBuffer(context, staging);
+        throw;
+    }
+    // Deferred on a borrowed device: the copy names the handles, the staging buffer waits for it.
+    const VkBuffer source = staging.buffer, destination = result.buffer;
+    const VkBufferCopy region{0, 0, data.size()};
+    try {
+        runOneShot(
+            context, [=](VkCommandBuffer cmd) { vkCmdCopyBuffer(cmd, source, destination, 1, &region); },
+            [&context, staging]() mutable { destroyBuffer(context, staging); });
+    } catch (...) {
         destroyBuffer(context, result);
         throw;
     }
-    destroyBuffer(context, staging);
     return result;
 }
 

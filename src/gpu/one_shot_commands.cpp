@@ -1,11 +1,28 @@
 #include "gpu/one_shot_commands.h"
 
+#include "gpu/setup_queue.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 
 namespace gpu {
 
-void runOneShot(const VulkanContext& context, const std::function<void(VkCommandBuffer)>& record) {
+void runOneShot(const VulkanContext& context, std::function<void(VkCommandBuffer)> record,
+                std::function<void()> release) {
+    if (SetupQueue* deferred = context.deferredSetup()) {
+        deferred->add(std::move(record), std::move(release));
+        return;
+    }
+    try {
+        runOneShotNow(context, record);
+    } catch (...) {
+        if (release) release();
+        throw;
+    }
+    if (release) release();
+}
+
+void runOneShotNow(const VulkanContext& context, const std::function<void(VkCommandBuffer)>& record) {
+    if (!context.commandPool) throw Error("internal: a submission on a borrowed device");
     VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     allocate.commandPool = context.commandPool;
     allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -19,15 +36,7 @@ void runOneShot(const VulkanContext& context, const std::function<void(VkCommand
         VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
         record(cmd);
         // Make every write of this submission available to whatever comes next, host included.
-        VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        barrier.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-        barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_2_HOST_BIT;
-        barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT | VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dependency.memoryBarrierCount = 1;
-        dependency.pMemoryBarriers = &barrier;
-        vkCmdPipelineBarrier2(cmd, &dependency);
+        recordFullBarrier(cmd);
         VK_CHECK(vkEndCommandBuffer(cmd));
 
         VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};

@@ -84,7 +84,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     raster.depthBiasConstantFactor = desc.depthBiasConstant;
     raster.depthBiasSlopeFactor = desc.depthBiasSlope;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    multisample.rasterizationSamples = desc.samples;
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     const bool hasDepth = desc.depthFormat != VK_FORMAT_UNDEFINED;
     depth.depthTestEnable = hasDepth;
@@ -179,12 +179,13 @@ void writeBufferDescriptor(const VulkanContext& context, VkDescriptorSet set, st
     vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
 }
 
-void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent) {
-    const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
-                              0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent) { setViewportAndScissor(cmd, {{0, 0}, extent}); }
+
+void setViewportAndScissor(VkCommandBuffer cmd, const VkRect2D& area) {
+    const VkViewport viewport{static_cast<float>(area.offset.x), static_cast<float>(area.offset.y),
+                              static_cast<float>(area.extent.width), static_cast<float>(area.extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdSetScissor(cmd, 0, 1, &area);
 }
 
 }  // namespace gpu

@@ -24,6 +24,7 @@ struct GraphicsPipelineDesc {
     std::vector<VkVertexInputAttributeDescription> attributes;
     std::vector<VkFormat> colorFormats;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;  // no depth attachment when undefined
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // of the attachments it renders into
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
     // Depth bias (shadow maps): constant in depth units and per unit of slope; off when both are 0.
@@ -49,5 +50,6 @@ void writeBufferDescriptor(const VulkanContext& context, VkDescriptorSet set, st
                            VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
 
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent);
+void setViewportAndScissor(VkCommandBuffer cmd, const VkRect2D& area);
 
 }  // namespace gpu

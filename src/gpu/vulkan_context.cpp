@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "gpu/setup_queue.h"
 #include "gpu/vulkan_error.h"
 
 namespace gpu {
@@ -109,7 +110,32 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
     }
 }
 
-VulkanContext::~VulkanContext() { release(); }
+VulkanContext::VulkanContext(const BorrowedHandles& borrowed)
+    : instance(borrowed.instance),
+      physicalDevice(borrowed.physicalDevice),
+      device(borrowed.device),
+      queueFamily(borrowed.queueFamily),
+      multiDrawIndirect(true),
+      fragmentStores(borrowed.fragmentStoresAndAtomics),
+      setup_(std::make_unique<SetupQueue>()) {
+    vkGetPhysicalDeviceProperties(physicalDevice, &properties);
+    vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memoryProperties);
+    description = describe(physicalDevice, 0);
+    std::uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, families.data());
+    if (queueFamily < familyCount && families[queueFamily].timestampValidBits > 0)
+        timestampPeriodNs_ = properties.limits.timestampPeriod;
+}
+
+VulkanContext::~VulkanContext() {
+    if (setup_) {
+        setup_.reset();  // the borrowed device is the host's to destroy, after the library
+        return;
+    }
+    release();
+}
 
 void VulkanContext::release() {
     if (device) {

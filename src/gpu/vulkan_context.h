@@ -2,6 +2,7 @@
 // The Vulkan instance, the chosen physical device, its logical device, one queue and a command pool.
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,26 @@ struct DeviceDescription {
     std::uint32_t apiVersion;
 };
 
+class SetupQueue;
+
+// A device somebody else created (the host of the library): the context only looks at it. Its setup
+// commands wait in a SetupQueue for the host to record; it has no queue or command pool of its own.
+struct BorrowedHandles {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    std::uint32_t queueFamily = 0;
+    bool fragmentStoresAndAtomics = false;  // whether the host enabled it (two-pass-direct needs it)
+};
+
 // Every physical device the loader reports. Throws Error when there is no Vulkan at all.
 std::vector<DeviceDescription> listDevices();
 
 class VulkanContext {
 public:
     explicit VulkanContext(const ContextOptions& options);
+    // Wraps a borrowed device; destroys nothing of it.
+    explicit VulkanContext(const BorrowedHandles& borrowed);
     ~VulkanContext();
     VulkanContext(const VulkanContext&) = delete;
     VulkanContext& operator=(const VulkanContext&) = delete;
@@ -57,6 +72,10 @@ public:
     // Nanoseconds per timestamp tick, or 0 when the queue has no timestamps.
     double timestampPeriodNs() const { return timestampPeriodNs_; }
     void setDebugName(VkObjectType type, std::uint64_t handle, const char* name) const;
+    // Where setup commands wait on a borrowed device; null when the context owns its device and
+    // submits them itself.
+    SetupQueue* deferredSetup() const { return setup_.get(); }
+    bool borrowed() const { return setup_ != nullptr; }
 
 private:
     void createInstance(const ContextOptions& options);
@@ -68,6 +87,7 @@ private:
     std::atomic<std::uint64_t> validationMessageCount_{0};
     double timestampPeriodNs_ = 0.0;
     bool debugUtils_ = false;
+    std::unique_ptr<SetupQueue> setup_;
 
     friend VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                                    VkDebugUtilsMessageTypeFlagsEXT,

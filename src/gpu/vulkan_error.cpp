@@ -45,8 +45,12 @@ const char* baseName(const char* path) {
 }  // namespace
 
 void throwVulkanError(VkResult result, const char* call, const char* file, int line) {
+    const ErrorKind kind = result == VK_ERROR_OUT_OF_DEVICE_MEMORY ? ErrorKind::OutOfDeviceMemory
+                           : result == VK_ERROR_OUT_OF_HOST_MEMORY ? ErrorKind::OutOfHostMemory
+                                                                    : ErrorKind::Vulkan;
     throw Error(std::string(resultName(result)) + " from " + call + " at " + baseName(file) + ":" +
-                std::to_string(line) + hintFor(result));
+                    std::to_string(line) + hintFor(result),
+                kind);
 }
 
 }  // namespace gpu

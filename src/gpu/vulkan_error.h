@@ -5,14 +5,9 @@
 
 #include <vulkan/vulkan.h>
 
-namespace gpu {
+#include "gpu/error.h"
 
-// A failure the user can act on (no device, out of memory, bad input): main() prints what() as
-// one line and exits non-zero.
-class Error : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
+namespace gpu {
 
 const char* resultName(VkResult result);
 

@@ -2,7 +2,7 @@
 // files) before handing the document to it.
 #include <cstring>
 
-#include "gpu/vulkan_error.h"
+#include "gpu/error.h"
 #include "model/gltf_internal.h"
 #include "model/gltf_loader.h"
 

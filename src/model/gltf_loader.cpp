@@ -10,7 +10,7 @@
 #include <system_error>
 
 #include "anim/local_to_model.h"
-#include "gpu/vulkan_error.h"
+#include "gpu/error.h"
 #include "model/gltf_internal.h"
 
 namespace model {

@@ -11,8 +11,10 @@ struct Camera {
     float nearPlane = 0.1f;
     float farPlane = 1000.0f;
 
-    // Vulkan clip space: y down, depth 0..1.
-    glm::mat4 viewProjection(float aspect) const;
+    glm::mat4 view() const;
+    // Vulkan clip space: y down, depth 0..1 (near 0).
+    glm::mat4 projection(float aspect) const;
+    glm::mat4 viewProjection(float aspect) const { return projection(aspect) * view(); }
 };
 
 // A camera in front of (+z) and above a crowd of this centre and radius, framing all of it.

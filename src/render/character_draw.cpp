@@ -9,7 +9,6 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
-#include "render/render_target.h"
 #include "skin_vs.vert.spv.h"
 #include "skin_vs_instanced.vert.spv.h"
 
@@ -30,7 +29,7 @@ gpu::BufferBinding boneBlockBinding(const gpu::VulkanContext& context, const Cro
 }  // namespace
 
 CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-                             const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout)
+                             const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target)
     : context_(context), pool_(pool), crowd_(crowd), lists_(lists) {
     try {
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -41,7 +40,7 @@ CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPo
         crowdSet_ = std::make_unique<gpu::DescriptorBundle>(context, kDrawStages, crowdBindings);
         const gpu::BufferBinding block[] = {boneBlockBinding(context, crowd)};
         boneBlock_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, block);
-        createPipelines(sceneSetLayout);
+        createPipelines(sceneSetLayout, target);
     } catch (...) {
         release();
         throw;
@@ -62,14 +61,15 @@ void CharacterDraw::release() {
     crowdSet_.reset();
 }
 
-void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout) {
+void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target) {
     const VkDescriptorSetLayout sets[3] = {sceneSetLayout, crowdSet_->layout(), boneBlock_->layout()};
     const VkPushConstantRange push{kDrawStages, 0, sizeof(ScenePush)};
     layout_ = gpu::createPipelineLayout(context_, sets, {&push, 1});
     gpu::GraphicsPipelineDesc colour;
     colour.fragmentShader = draw_frag_spv;
-    colour.colorFormats = {kColorFormat};
-    colour.depthFormat = kDepthFormat;
+    colour.colorFormats = {target.color};
+    colour.depthFormat = target.depth;
+    colour.samples = target.samples;
     colour.layout = layout_;
     createPipelines(colour, colour_);
     // The shadow map: depth only, both faces (the light's projection is not mirrored like the camera's),
@@ -78,6 +78,7 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout) {
     shadow.fragmentShader = shadow_frag_spv;
     shadow.colorFormats = {};
     shadow.depthFormat = kShadowFormat;
+    shadow.samples = VK_SAMPLE_COUNT_1_BIT;
     shadow.cullMode = VK_CULL_MODE_NONE;
     shadow.depthBiasConstant = 1.0f;
     shadow.depthBiasSlope = 1.5f;

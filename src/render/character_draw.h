@@ -18,6 +18,8 @@
 #include "render/geometry_pool.h"
 #include "render/scene_pass.h"
 
+#include "render/target_format.h"
+
 namespace gpu { class VulkanContext; }
 
 namespace render {
@@ -38,7 +40,7 @@ struct SkinnedVertices {
 class CharacterDraw {
 public:
     CharacterDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-                  const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout);
+                  const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target);
     ~CharacterDraw();
     CharacterDraw(const CharacterDraw&) = delete;
     CharacterDraw& operator=(const CharacterDraw&) = delete;
@@ -51,7 +53,7 @@ public:
                 const ScenePush& push, Target target = Target::Colour) const;
 
 private:
-    void createPipelines(VkDescriptorSetLayout sceneSetLayout);
+    void createPipelines(VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target);
     // The three pipelines (skinned, per character, instanced) for one target's formats.
     void createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3]);
     void release();

@@ -77,9 +77,10 @@ CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd
     const VkDeviceSize boneBytes = layout_.bytes();
     // Offsets are 32-bit BoneRows indices in the shaders; the storage range bounds what one binding sees.
     if (boneBytes > context.properties.limits.maxStorageBufferRange || layout_.totalRows > UINT32_MAX)
-        throw gpu::Error("--count " + std::to_string(crowd.size()) + ": bone matrices need " +
+        throw gpu::Error("a crowd of " + std::to_string(crowd.size()) + " characters: bone matrices need " +
                          gpu::formatBytes(boneBytes) + ", over this device's storage-buffer limit of " +
-                         gpu::formatBytes(context.properties.limits.maxStorageBufferRange));
+                         gpu::formatBytes(context.properties.limits.maxStorageBufferRange),
+                         gpu::ErrorKind::OutOfDeviceMemory);
     records_ = characterRecords(crowd, layout_.offsets);
     try {
         characters_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),

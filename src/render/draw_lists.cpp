@@ -96,7 +96,9 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
         lodState_ = gpu::createBuffer(context, n * 4, filled, device, "LOD state");
         impostorFrame_ = gpu::createBuffer(context, sizeof(gpu::ImpostorFrame), indirect | filled, device, "impostor draw");
         impostorList_ = gpu::createBuffer(context, n * 4, filled, device, "impostor list");
-        gpu::runOneShot(context, [&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, lodState_.buffer, 0, VK_WHOLE_SIZE, 0); });
+        gpu::runOneShot(context, [state = lodState_.buffer](VkCommandBuffer cmd) {
+            vkCmdFillBuffer(cmd, state, 0, VK_WHOLE_SIZE, 0);
+        });
         for (std::uint32_t i = 0; i < framesInFlight; ++i) {
             // The bucket counts, then the impostor level's figures.
             readback_.push_back(gpu::createBuffer(context, b * sizeof(gpu::BucketFrame) + sizeof(gpu::ImpostorFrame),

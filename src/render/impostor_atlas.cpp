@@ -17,13 +17,13 @@
 #include "impostor_capture.frag.spv.h"
 #include "impostor_capture.vert.spv.h"
 #include "render/impostor_cell.h"
-#include "render/render_target.h"
 
 namespace render {
 
 namespace {
 
 constexpr VkFormat kFormats[2] = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R8G8B8A8_UNORM};  // albedo, normal
+constexpr VkFormat kCaptureDepthFormat = VK_FORMAT_D32_SFLOAT;  // the bake's own depth, not the host's
 constexpr std::uint32_t kBytesPerTexel = 8;  // both arrays
 constexpr std::uint32_t kSmallestCell = 8;   // texels: the last mip level
 constexpr std::uint32_t kLayerSide = 2048;   // texels per side of one array layer (at least one cell)
@@ -236,17 +236,22 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
     std::vector<VkImageView> layerViews;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    std::unique_ptr<gpu::DescriptorBundle> poseSet;
-    auto cleanup = [&] {
-        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
-        if (layout) vkDestroyPipelineLayout(context_.device, layout, nullptr);
-        poseSet.reset();
-        for (VkImageView v : layerViews) vkDestroyImageView(context_.device, v, nullptr);
-        gpu::destroyImage(context_, depth);
-        gpu::destroyBuffer(context_, bones);
+    std::shared_ptr<gpu::DescriptorBundle> poseSet;
+    bool handedOver = false;
+    // What the bake needs until its commands have run: released at once, or by the host's setup
+    // queue once its submission is done (a borrowed device).
+    auto cleanup = [this, &pipeline, &layout, &poseSet, &layerViews, &depth, &bones] {
+        return [&context = context_, pipeline, layout, poseSet, layerViews, depth, bones]() mutable {
+            if (pipeline) vkDestroyPipeline(context.device, pipeline, nullptr);
+            if (layout) vkDestroyPipelineLayout(context.device, layout, nullptr);
+            poseSet.reset();
+            for (VkImageView v : layerViews) vkDestroyImageView(context.device, v, nullptr);
+            gpu::destroyImage(context, depth);
+            gpu::destroyBuffer(context, bones);
+        };
     };
     try {
-        depth = gpu::createImage2D(context_, {side, side}, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+        depth = gpu::createImage2D(context_, {side, side}, kCaptureDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                    "impostor capture depth");
         // Mip 0 of each layer of both arrays, as attachments: index layer x 2 + array.
         for (std::uint32_t l = 0; l < plan_.layers; ++l)
@@ -261,7 +266,7 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
             }
         const gpu::BufferBinding bindings[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pool.modelTable().buffer},
                                                 {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bones.buffer}};
-        poseSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_VERTEX_BIT, bindings);
+        poseSet = std::make_shared<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_VERTEX_BIT, bindings);
         const VkDescriptorSetLayout sets[2] = {sceneSetLayout, poseSet->layout()};
         const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(CapturePush)};
         layout = gpu::createPipelineLayout(context_, sets, {&push, 1});
@@ -274,12 +279,16 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
                            {2, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(gpu::SkinVertex, joints)},
                            {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(gpu::SkinVertex, weights)}};
         desc.colorFormats = {kFormats[0], kFormats[1]};
-        desc.depthFormat = kDepthFormat;
+        desc.depthFormat = kCaptureDepthFormat;
         desc.layout = layout;
         desc.cullMode = VK_CULL_MODE_NONE;  // the orthographic basis may mirror winding; depth sorts it out
         pipeline = gpu::createGraphicsPipeline(context_, desc);
 
-        gpu::runOneShot(context_, [&](VkCommandBuffer cmd) {
+        const VkDescriptorSet poseDescriptors = poseSet->set();
+        handedOver = true;  // from here runOneShot releases the temporaries, whatever happens
+        const VkBuffer bindVertices = pool.bindVertices().buffer, indices = pool.indices().buffer;
+        const std::vector<gpu::ModelRecord> records = pool.models();
+        gpu::runOneShot(context_, [=, this](VkCommandBuffer cmd) {
             for (int i = 0; i < 2; ++i)
                 transition(cmd, images_[i], 0, 1, {VK_PIPELINE_STAGE_2_NONE, 0}, colourWrite(), VK_IMAGE_LAYOUT_UNDEFINED,
                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
@@ -316,13 +325,13 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
                 rendering.pDepthAttachment = &depthAttachment;
                 vkCmdBeginRendering(cmd, &rendering);
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-                const VkDescriptorSet bound[2] = {sceneSet, poseSet->set()};
+                const VkDescriptorSet bound[2] = {sceneSet, poseDescriptors};
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, bound, 0, nullptr);
-                vkCmdBindVertexBuffers(cmd, 0, 1, &pool.bindVertices().buffer, &zero);
-                vkCmdBindIndexBuffer(cmd, pool.indices().buffer, 0, VK_INDEX_TYPE_UINT32);
+                vkCmdBindVertexBuffers(cmd, 0, 1, &bindVertices, &zero);
+                vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
                 for (std::uint32_t m = 0; m < plan_.models.size(); ++m) {
                     const gpu::ImpostorModel& im = plan_.models[m];
-                    const gpu::ModelRecord& record = pool.models()[m];
+                    const gpu::ModelRecord& record = records[m];
                     const std::uint32_t cells = im.cells.y * im.cells.z * im.views.x * im.views.y;
                     const std::uint32_t first = std::max(im.cells.x, l * perLayer);
                     const std::uint32_t end = std::min(im.cells.x + cells, (l + 1) * perLayer);
@@ -380,12 +389,11 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
                            {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
             }
-        });
+        }, cleanup());
     } catch (...) {
-        cleanup();
+        if (!handedOver) cleanup()();
         throw;
     }
-    cleanup();
 }
 
 }  // namespace render

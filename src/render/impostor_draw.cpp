@@ -12,7 +12,6 @@
 #include "impostor.frag.spv.h"
 #include "impostor.vert.spv.h"
 #include "impostor_draws.comp.spv.h"
-#include "render/render_target.h"
 
 namespace render {
 
@@ -21,7 +20,8 @@ constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_ST
 }
 
 ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-                           const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout)
+                           const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
+                           const TargetFormat& target)
     : context_(context), lists_(lists), atlas_(atlas) {
     try {
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -55,8 +55,9 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         gpu::GraphicsPipelineDesc desc;
         desc.vertexShader = impostor_vert_spv;
         desc.fragmentShader = impostor_frag_spv;
-        desc.colorFormats = {kColorFormat};
-        desc.depthFormat = kDepthFormat;
+        desc.colorFormats = {target.color};
+        desc.depthFormat = target.depth;
+        desc.samples = target.samples;
         desc.layout = layout_;
         desc.cullMode = VK_CULL_MODE_NONE;  // a quad facing the eye: its winding is not worth deriving
         pipeline_ = gpu::createGraphicsPipeline(context, desc);

@@ -15,6 +15,8 @@
 #include "render/impostor_atlas.h"
 #include "render/scene_pass.h"
 
+#include "render/target_format.h"
+
 namespace gpu { class VulkanContext; }
 
 namespace render {
@@ -22,7 +24,8 @@ namespace render {
 class ImpostorDraw {
 public:
     ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-                 const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout);
+                 const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
+                 const TargetFormat& target);
     ~ImpostorDraw();
     ImpostorDraw(const ImpostorDraw&) = delete;
     ImpostorDraw& operator=(const ImpostorDraw&) = delete;

@@ -68,20 +68,23 @@ void MaterialTextures::upload(const gpu::Image& image, std::span<const std::uint
     gpu::Buffer staging = gpu::createBuffer(context_, pixels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                             gpu::MemoryUse::HostUpload, "base-colour texture (staging)");
     std::memcpy(staging.mapped, pixels.data(), pixels.size());
-    gpu::runOneShot(context_, [&](VkCommandBuffer cmd) {
-        gpu::imageBarrier(cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT, {VK_PIPELINE_STAGE_2_NONE, 0},
+    const VkImage target = image.image;
+    const VkExtent2D extent = image.extent;
+    const VkBuffer source = staging.buffer;
+    const gpu::VulkanContext& context = context_;
+    gpu::runOneShot(context_, [=](VkCommandBuffer cmd) {
+        gpu::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, {VK_PIPELINE_STAGE_2_NONE, 0},
                           {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT}, VK_IMAGE_LAYOUT_UNDEFINED,
                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {image.extent.width, image.extent.height, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        gpu::imageBarrier(cmd, image.image, VK_IMAGE_ASPECT_COLOR_BIT,
+        region.imageExtent = {extent.width, extent.height, 1};
+        vkCmdCopyBufferToImage(cmd, source, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        gpu::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT,
                           {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                           {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    });
-    gpu::destroyBuffer(context_, staging);
+    }, [&context, staging]() mutable { gpu::destroyBuffer(context, staging); });
 }
 
 std::array<VkImageView, MAX_TEXTURES> MaterialTextures::views() const {

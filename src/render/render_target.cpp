@@ -75,7 +75,7 @@ Rgba8Image RenderTarget::readback() {
     const VkDeviceSize size = static_cast<VkDeviceSize>(extent.width) * extent.height * 4;
     gpu::Buffer staging = gpu::createBuffer(context_, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                             gpu::MemoryUse::HostReadback, "scene readback");
-    gpu::runOneShot(context_, [&](VkCommandBuffer cmd) {
+    gpu::runOneShotNow(context_, [&](VkCommandBuffer cmd) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent.width, extent.height, 1};

@@ -10,12 +10,11 @@
 #include "gpu/vulkan_context.h"
 #include "render/geometry_pool.h"
 #include "render/shadow_map.h"
-#include "render/render_target.h"
 
 namespace render {
 
 ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-                     const ShadowMap& shadowMap)
+                     const ShadowMap& shadowMap, const TargetFormat& target)
     : context_(context) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[4] = {
@@ -46,8 +45,9 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
     gpu::GraphicsPipelineDesc desc;
     desc.vertexShader = ground_vert_spv;
     desc.fragmentShader = ground_frag_spv;
-    desc.colorFormats = {kColorFormat};
-    desc.depthFormat = kDepthFormat;
+    desc.colorFormats = {target.color};
+    desc.depthFormat = target.depth;
+    desc.samples = target.samples;
     desc.layout = groundLayout_;
     desc.cullMode = VK_CULL_MODE_NONE;
     groundPipeline_ = gpu::createGraphicsPipeline(context, desc);

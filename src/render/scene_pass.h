@@ -10,6 +10,8 @@
 #include "gpu/buffer.h"
 #include "gpu_types.h"
 
+#include "render/target_format.h"
+
 namespace gpu { class VulkanContext; }
 
 namespace render {
@@ -29,7 +31,7 @@ struct ScenePush {
 class ScenePass {
 public:
     ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-              const ShadowMap& shadowMap);
+              const ShadowMap& shadowMap, const TargetFormat& target);
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;

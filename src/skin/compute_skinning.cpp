@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "gpu/gpu_timer.h"
+#include "gpu/pass_observer.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -97,13 +97,13 @@ void ComputeSkinning::recordDispatches(VkCommandBuffer cmd) {
     }
 }
 
-void ComputeSkinning::recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) {
+void ComputeSkinning::recordSkinning(VkCommandBuffer cmd, const gpu::PassObserver& passes) {
     if (once() && skinnedOnce_) return;  // the ceiling: vertices stay as the first frame left them
     const gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
     skinned_->barrierBeforeWrite(cmd, computeWrite);
     recordDispatches(cmd);
     skinned_->barrierAfterWrite(cmd, computeWrite);
-    timer.mark(cmd, "skin");
+    gpu::passDone(passes, cmd, "skin");
     skinnedOnce_ = true;
 }
 

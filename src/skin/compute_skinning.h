@@ -21,7 +21,7 @@ public:
     ~ComputeSkinning() override;
 
     Method method() const override { return once() ? Method::Static : Method::Compute; }
-    void recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) override;
+    void recordSkinning(VkCommandBuffer cmd, const gpu::PassObserver& passes) override;
     std::vector<MemoryItem> memory() const override;
     render::SkinnedVertices skinnedVertices() const override { return skinned_->vertices(); }
     bool needsAnimation() const override { return !(once() && skinnedOnce_); }

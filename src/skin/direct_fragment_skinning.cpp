@@ -1,6 +1,6 @@
 #include "skin/direct_fragment_skinning.h"
 
-#include "gpu/gpu_timer.h"
+#include "gpu/pass_observer.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "render/draw_lists.h"
@@ -23,7 +23,7 @@ DirectFragmentSkinning::DirectFragmentSkinning(const MethodSetup& setup)
                                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT)),
       pass_(std::make_unique<FragmentSkinPass>(setup, *skinned_, skin_direct_frag_spv, std::vector<VkFormat>{})) {}
 
-void DirectFragmentSkinning::recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) {
+void DirectFragmentSkinning::recordSkinning(VkCommandBuffer cmd, const gpu::PassObserver& passes) {
     const gpu::Access fragmentWrite{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
     skinned_->barrierBeforeWrite(cmd, fragmentWrite);
     const SkinTargetLayout& layout = pass_->layout();
@@ -37,7 +37,7 @@ void DirectFragmentSkinning::recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& 
         vkCmdEndRendering(cmd);
     }
     skinned_->barrierAfterWrite(cmd, fragmentWrite);
-    timer.mark(cmd, "skin");
+    gpu::passDone(passes, cmd, "skin");
 }
 
 }  // namespace skin

@@ -14,7 +14,7 @@ public:
     explicit DirectFragmentSkinning(const MethodSetup& setup);
 
     Method method() const override { return Method::TwoPassDirect; }
-    void recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) override;
+    void recordSkinning(VkCommandBuffer cmd, const gpu::PassObserver& passes) override;
     std::vector<MemoryItem> memory() const override { return {{"skinned vertex buffer", skinned_->bytes()}}; }
     render::SkinnedVertices skinnedVertices() const override { return skinned_->vertices(); }
 

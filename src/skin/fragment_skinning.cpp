@@ -1,7 +1,7 @@
 #include "skin/fragment_skinning.h"
 
 #include "gpu/barriers.h"
-#include "gpu/gpu_timer.h"
+#include "gpu/pass_observer.h"
 #include "gpu/vulkan_context.h"
 #include "render/draw_lists.h"
 #include "skin_fragment.frag.spv.h"
@@ -117,11 +117,11 @@ void FragmentSkinning::recordCopies(VkCommandBuffer cmd) {
     skinned_->barrierAfterWrite(cmd, copyWrite);
 }
 
-void FragmentSkinning::recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) {
+void FragmentSkinning::recordSkinning(VkCommandBuffer cmd, const gpu::PassObserver& passes) {
     for (std::uint32_t t = 0; t < pass_->layout().tileCount; ++t) recordTile(cmd, t);
-    timer.mark(cmd, "skin");
+    gpu::passDone(passes, cmd, "skin");
     recordCopies(cmd);
-    timer.mark(cmd, "copy");
+    gpu::passDone(passes, cmd, "copy");
 }
 
 std::vector<MemoryItem> FragmentSkinning::memory() const {

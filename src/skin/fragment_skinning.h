@@ -22,7 +22,7 @@ public:
     ~FragmentSkinning() override;
 
     Method method() const override { return Method::TwoPass; }
-    void recordSkinning(VkCommandBuffer cmd, gpu::GpuTimer& timer) override;
+    void recordSkinning(VkCommandBuffer cmd, const gpu::PassObserver& passes) override;
     std::vector<MemoryItem> memory() const override;
     render::SkinnedVertices skinnedVertices() const override { return skinned_->vertices(); }
     const SkinTargetLayout& layout() const { return pass_->layout(); }

@@ -40,7 +40,7 @@ std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const Method
         case Method::VertexShader:
             // It binds each character's bones at a dynamic uniform offset, which must be aligned.
             if (!setup.crowd.bonesAligned())
-                throw gpu::Error("--method vs: this crowd's bone matrices fit the device's storage-buffer range only "
+                throw gpu::Error("method vs: this crowd's bone matrices fit the device's storage-buffer range only "
                                  "packed tightly, and vs binds each character's at an aligned offset; use another "
                                  "method or fewer characters");
             return std::make_unique<VertexShaderSkinning>(false);

@@ -13,11 +13,11 @@
 
 #include <vulkan/vulkan.h>
 
+#include "gpu/pass_observer.h"
 #include "render/character_draw.h"
 
 namespace gpu {
 class VulkanContext;
-class GpuTimer;
 }  // namespace gpu
 namespace render {
 class CrowdBuffers;
@@ -55,8 +55,8 @@ public:
     virtual Method method() const = 0;
     // What the draw pass consumes from this method.
     virtual render::DrawInput drawInput() const { return render::DrawInput::SkinnedVertices; }
-    // Records the work between culling and drawing (skinning, copies), marking each pass on the timer.
-    virtual void recordSkinning(VkCommandBuffer, gpu::GpuTimer&) {}
+    // Records the work between culling and drawing (skinning, copies), telling `passes` as each ends.
+    virtual void recordSkinning(VkCommandBuffer, const gpu::PassObserver&) {}
     virtual render::SkinnedVertices skinnedVertices() const { return {}; }
     // Buffers and images this method allocated for the crowd.
     virtual std::vector<MemoryItem> memory() const { return {}; }

@@ -41,13 +41,13 @@ void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     renderer_.reset();
     crowd_ = std::move(next);
     models_ = std::move(models);
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = size;
     options.method = method_;
     options.cull = cull_;
     options.shadows = shadows_;
     options.animation = animation_;
-    renderer_ = std::make_unique<frame::CrowdRenderer>(context_, *crowd_, options);
+    renderer_ = std::make_unique<app::CrowdRenderer>(context_, *crowd_, options);
     scene_ = scene;
     notes_.insert(notes_.end(), notes.begin(), notes.end());
 }

@@ -13,7 +13,7 @@
 #include "app/options.h"
 #include "crowd/crowd.h"
 #include "model/skinned_model.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -37,8 +37,8 @@ public:
     // Where bone matrices come from (--animation), now and for crowds rebuilt later.
     void setAnimation(render::AnimationPath path) { animation_ = path, renderer_->setAnimation(path); }
 
-    frame::CrowdRenderer& renderer() { return *renderer_; }
-    const frame::CrowdRenderer& renderer() const { return *renderer_; }
+    app::CrowdRenderer& renderer() { return *renderer_; }
+    const app::CrowdRenderer& renderer() const { return *renderer_; }
     const crowd::Crowd& crowd() const { return *crowd_; }
     // The crowd's first model (the only one unless --model lists several).
     const model::SkinnedModel& model() const { return *models_.models.front(); }
@@ -58,7 +58,7 @@ private:
     render::AnimationPath animation_ = render::AnimationPath::Gpu;
     app::CrowdModels models_;
     std::unique_ptr<crowd::Crowd> crowd_;
-    std::unique_ptr<frame::CrowdRenderer> renderer_;
+    std::unique_ptr<app::CrowdRenderer> renderer_;
     std::vector<std::string> notes_;
 };
 

@@ -5,14 +5,14 @@
 
 namespace view {
 
-void FrameHistory::add(const frame::FrameStats& frame) {
+void FrameHistory::add(const app::FrameStats& frame) {
     frames_.push_back(frame);
     while (frames_.size() > capacity_) frames_.pop_front();
 }
 
 std::vector<float> FrameHistory::frameMs() const {
     std::vector<float> times;
-    for (const frame::FrameStats& f : frames_)
+    for (const app::FrameStats& f : frames_)
         if (f.intervalMs > 0.0) times.push_back(static_cast<float>(f.intervalMs));
     return times;
 }
@@ -30,14 +30,14 @@ double FrameHistory::fps() const {
 double FrameHistory::meanCpuMs() const {
     if (frames_.empty()) return 0.0;
     double sum = 0.0;
-    for (const frame::FrameStats& f : frames_) sum += f.animateMs + f.recordMs;
+    for (const app::FrameStats& f : frames_) sum += f.animateMs + f.recordMs;
     return sum / static_cast<double>(frames_.size());
 }
 
 std::vector<gpu::PassTime> FrameHistory::meanGpuMs() const {
     std::vector<gpu::PassTime> sums;
     std::vector<std::size_t> counts;
-    for (const frame::FrameStats& f : frames_) {
+    for (const app::FrameStats& f : frames_) {
         for (const gpu::PassTime& pass : f.gpu) {
             auto it = std::find_if(sums.begin(), sums.end(),
                                    [&](const gpu::PassTime& p) { return p.pass == pass.pass; });

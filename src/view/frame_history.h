@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "gpu/gpu_timer.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 
 namespace view {
 
@@ -15,7 +15,7 @@ public:
     explicit FrameHistory(std::size_t capacity = 240) : capacity_(capacity) {}
 
     // A frame's statistics; the oldest frame is dropped beyond the capacity.
-    void add(const frame::FrameStats& frame);
+    void add(const app::FrameStats& frame);
     // Forgets everything (after a rebuild, so old figures do not blend with the new crowd's).
     void clear() { frames_.clear(); }
 
@@ -33,7 +33,7 @@ public:
 
 private:
     std::size_t capacity_;
-    std::deque<frame::FrameStats> frames_;
+    std::deque<app::FrameStats> frames_;
 };
 
 }  // namespace view

@@ -19,7 +19,7 @@ namespace view {
 namespace {
 
 // The renderer's frames in flight; the swapchain sizes its ring of acquire semaphores by it.
-const std::uint32_t kFramesInFlight = frame::RendererOptions{}.framesInFlight;
+const std::uint32_t kFramesInFlight = app::RendererOptions{}.framesInFlight;
 // A stall (a rebuild, a dragged window) must not make the animation jump ahead.
 constexpr float kMaxStepSeconds = 0.25f;
 
@@ -105,7 +105,7 @@ int Viewer::run() {
             swapchainStale_ = true;  // out of date before anything was drawn: recreate, draw this frame again
             continue;
         }
-        for (const frame::FrameStats& stats : scene_.renderer().takeStats()) history_.add(stats);
+        for (const app::FrameStats& stats : scene_.renderer().takeStats()) history_.add(stats);
         ++frame;
     }
     scene_.renderer().finish();
@@ -133,7 +133,7 @@ bool Viewer::drawFrame(float time, bool screenshot) {
     std::unique_ptr<Screenshot> shot;
     if (screenshot) shot = std::make_unique<Screenshot>(context_, swapchain_.extent(), swapchain_.format());
 
-    frame::PresentHooks hooks;
+    app::PresentHooks hooks;
     hooks.waitSemaphore = frame->acquired;
     hooks.signalSemaphore = frame->rendered;
     hooks.recordAfterScene = [&](VkCommandBuffer cmd, VkImage scene, VkExtent2D sceneExtent) {

@@ -55,7 +55,7 @@ std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::
 }
 
 std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
-                                                     const frame::CrowdRenderer& renderer) {
+                                                     const app::CrowdRenderer& renderer) {
     const render::DrawLists& lists = renderer.drawLists();
     const std::vector<std::byte> totalsBytes = readBuffer(context, lists.totals());
     const std::vector<std::byte> drawBytes = readBuffer(context, lists.draws());
@@ -75,7 +75,7 @@ std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& c
     return drawn;
 }
 
-ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::CrowdRenderer& renderer,
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, app::CrowdRenderer& renderer,
                                       std::uint32_t character) {
     const std::map<std::uint32_t, DrawnCharacter> drawn = readDrawList(context, renderer);
     const DrawnCharacter& d = drawn.at(character);
@@ -85,13 +85,13 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::
 namespace {
 
 render::Rgba8Image renderCrowd(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::Camera& camera) {
-    frame::RendererOptions options;
+    app::RendererOptions options;
     options.size = {192, 108};
     options.method = skin::Method::Compute;
     // Each model's own crowd lacks the other's shadows (and frames its light differently): compare
     // the characters themselves.
     options.shadows = false;
-    frame::CrowdRenderer renderer(context, crowd, options);
+    app::CrowdRenderer renderer(context, crowd, options);
     renderer.camera = camera;
     renderer.renderFrame(1.25f);
     return renderer.readback();

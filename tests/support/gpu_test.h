@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "crowd/crowd.h"
-#include "frame/crowd_renderer.h"
+#include "app/crowd_renderer.h"
 #include "gpu/vulkan_context.h"
 #include "render/png_writer.h"
 #include "skin/skinning_method.h"
@@ -41,10 +41,10 @@ struct DrawnCharacter {
 };
 // The last frame's compacted draw list, by character (culled characters are absent); call after finish().
 std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
-                                                     const frame::CrowdRenderer& renderer);
+                                                     const app::CrowdRenderer& renderer);
 
 // The last frame's skinned vertices of one drawn character (it must be in the draw list).
-ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, frame::CrowdRenderer& renderer,
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, app::CrowdRenderer& renderer,
                                       std::uint32_t character);
 
 // Fraction of pixels whose every channel differs by at most `tolerance` (out of 255).

@@ -1,0 +1,92 @@
+// crowdgpu: the crowd, Vulkan-free (link crowdgpu::core).
+//
+// Every character has its model, clip, phase, speed, scale and tint, and moves by a plan: looping in
+// place (the paper's crowd), marching in formation or milling about, or by the host's commands.
+// Motion is closed form: any character's state at any time costs a few operations, on the CPU here
+// or on the GPU in the renderer. advanceTo(time) is the one call that changes plans; a renderer reads
+// the crowd when it records a frame.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "crowdgpu/model.hpp"
+
+namespace crowdgpu {
+
+namespace detail { struct CrowdData; }
+
+// What a character is when it enters the crowd: it plays `clip` in place until its behaviour or a
+// command moves it.
+struct Character {
+    std::uint32_t model = 0;     // index into the crowd's models
+    std::uint32_t clip = 0;      // index into its model's clips
+    float phase = 0.0f;          // seconds added to the crowd's clock for this character
+    float speed = 1.0f;          // playback rate
+    float position[3] = {0.0f, 0.0f, 0.0f};  // metres; y up, characters stand on y = 0
+    float heading = 0.0f;        // radians about +y; 0 faces +z
+    float scale = 1.0f;
+    float tint[3] = {1.0f, 1.0f, 1.0f};  // linear colour multiplier
+};
+
+enum class Behaviour { InPlace, March, Mill };
+
+// A square grid centred on the origin, with seeded jitter of position, heading, phase, speed and tint.
+struct GridLayout {
+    std::uint32_t count = 1024;
+    std::uint32_t seed = 1;
+    std::vector<float> weights;  // per model: its share of the crowd (empty: equal)
+    std::vector<std::int32_t> clips;  // per model: the clip to play (-1 or missing: "walk", else the first)
+    bool randomClips = false;    // every character picks a random clip of its model
+    bool formation = false;      // an exact grid in step (marching)
+    float scaleVariation = 0.0f; // each character's scale varies by up to this fraction either way
+    float tintVariation = 0.0f;  // and each tint channel by up to this one
+};
+
+// Where a character is and what it plays at a time.
+struct CharacterState {
+    float position[3];
+    float heading;
+    std::uint32_t clipFrom, clipTo;  // crossfading from one to the other (equal when not)
+    float weight;                    // of clipTo
+    float phase;                     // normalized, in cycles
+};
+
+class Crowd {
+public:
+    // Throws Error(InvalidArgument) naming the character whose model or clip does not exist.
+    Crowd(std::vector<Model> models, std::vector<Character> characters, Behaviour behaviour = Behaviour::InPlace,
+          std::uint32_t seed = 1);
+    static Crowd grid(std::vector<Model> models, const GridLayout& layout, Behaviour behaviour = Behaviour::InPlace);
+    ~Crowd();
+    Crowd(Crowd&&) noexcept;
+    Crowd& operator=(Crowd&&) noexcept;
+
+    std::uint32_t size() const;
+    const std::vector<Model>& models() const;
+    // Adds a character under the crowd's behaviour; returns its index. A renderer sizes its buffers
+    // when it is made: spawn before making one.
+    std::uint32_t spawn(const Character& character);
+    // From time `at` (or once its crossfade ends) walk to (x, z) with clip `gait` (-1: the model's walk)
+    // at `rate` times its speed, and stop there.
+    void moveTo(std::uint32_t character, float x, float z, float at, std::int32_t gait = -1, float rate = 1.0f);
+    // From time `at` crossfade over `fade` seconds to `clip` at `rate` and keep playing it.
+    void play(std::uint32_t character, std::int32_t clip, float at, float fade = 0.3f, float rate = 1.0f);
+    // Plans every character up to `time` seconds: the host calls it once per frame, before recording.
+    // Cost: the characters whose plan ran out (none for an in-place crowd).
+    void advanceTo(float time);
+    CharacterState stateAt(std::uint32_t character, float time) const;
+    // The ground the crowd stands on: centre (x, y, z) and radius in metres; its tallest model's height.
+    void bounds(float center[3], float& radius, float& tallest) const;
+
+    // The library's side (opaque to hosts).
+    explicit Crowd(std::unique_ptr<detail::CrowdData> data);
+    detail::CrowdData& data() { return *data_; }
+    const detail::CrowdData& data() const { return *data_; }
+
+private:
+    std::unique_ptr<detail::CrowdData> data_;
+};
+
+}  // namespace crowdgpu

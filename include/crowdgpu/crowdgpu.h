@@ -1,0 +1,141 @@
+/* crowdgpu: the C API (C11), for hosts in C and for bindings (C#, Rust, Python).
+ *
+ * The same library as the C++ headers, in the few calls a host needs: load a model, build a crowd,
+ * spawn and command characters, create a renderer on the host's device, record, destroy. Every
+ * call that can fail returns a crowdgpu_result; crowdgpu_last_error() then gives a one-line message
+ * (per thread, valid until the thread's next failing call). Handles are opaque; destroy what you
+ * create, renderers before their crowd, and both before the host destroys its device. The record
+ * contract is renderer.hpp's: recordSetup once (submit it before the first frame), then per frame
+ * slot recordCompute, recordShadows (outside any pass), recordGround and recordCharacters (inside
+ * the host's dynamic-rendering colour pass). Link crowdgpu::renderer (CMake) or crowdgpu (pkg-config). */
+#ifndef CROWDGPU_H
+#define CROWDGPU_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include <vulkan/vulkan.h>
+
+#include "crowdgpu/version.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum crowdgpu_result {
+    CROWDGPU_OK = 0,
+    CROWDGPU_ERROR_INVALID_ARGUMENT = 1,
+    CROWDGPU_ERROR_UNSUPPORTED = 2,
+    CROWDGPU_ERROR_OUT_OF_DEVICE_MEMORY = 3,
+    CROWDGPU_ERROR_OUT_OF_HOST_MEMORY = 4,
+    CROWDGPU_ERROR_WRONG_ORDER = 5,
+    CROWDGPU_ERROR_LOAD_FAILED = 6,
+    CROWDGPU_ERROR_VULKAN = 7
+} crowdgpu_result;
+
+/* The message of this thread's last failure ("" if none). */
+const char* crowdgpu_last_error(void);
+
+typedef struct crowdgpu_model_t* crowdgpu_model;
+typedef struct crowdgpu_crowd_t* crowdgpu_crowd;
+typedef struct crowdgpu_renderer_t* crowdgpu_renderer;
+
+/* ---- Models (Vulkan-free) ---- */
+crowdgpu_result crowdgpu_model_soldier(uint32_t seed, crowdgpu_model* out);
+crowdgpu_result crowdgpu_model_horse(uint32_t seed, crowdgpu_model* out);
+/* asset_root may be NULL (the file's own folder). */
+crowdgpu_result crowdgpu_model_load_gltf(const char* path, const char* asset_root, crowdgpu_model* out);
+/* The clip of this name, or -1. */
+int32_t crowdgpu_model_find_clip(crowdgpu_model model, const char* name);
+uint32_t crowdgpu_model_clip_count(crowdgpu_model model);
+void crowdgpu_model_destroy(crowdgpu_model model);
+
+/* ---- Crowds (Vulkan-free) ---- */
+typedef enum crowdgpu_behaviour { CROWDGPU_IN_PLACE = 0, CROWDGPU_MARCH = 1, CROWDGPU_MILL = 2 } crowdgpu_behaviour;
+
+typedef struct crowdgpu_character {
+    uint32_t model, clip;
+    float phase, speed;
+    float position[3];
+    float heading, scale;
+    float tint[3];
+} crowdgpu_character;
+
+/* A grid of `count` characters of the models (equal shares), each playing its model's "walk" (or
+ * first) clip with seeded jitter. The crowd keeps its models alive: the caller may destroy its own
+ * handles afterwards. */
+crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_t model_count, uint32_t count,
+                                           uint32_t seed, crowdgpu_behaviour behaviour, crowdgpu_crowd* out);
+crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* character, uint32_t* index);
+crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, float at);
+crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, float at, float fade);
+/* Plans every character up to `time` seconds: once per frame, before recording. */
+crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, float time);
+uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
+void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest);
+void crowdgpu_crowd_destroy(crowdgpu_crowd crowd);
+
+/* ---- The renderer on the host's device ---- */
+/* Sets the features crowdgpu needs in the host's chain for vkCreateDevice (Vulkan 1.3). */
+void crowdgpu_enable_required_features(VkPhysicalDeviceFeatures2* features, VkPhysicalDeviceVulkan11Features* vulkan11,
+                                       VkPhysicalDeviceVulkan12Features* vulkan12,
+                                       VkPhysicalDeviceVulkan13Features* vulkan13);
+
+typedef struct crowdgpu_device {
+    VkInstance instance;
+    VkPhysicalDevice physical_device;
+    VkDevice device;
+    uint32_t queue_family;
+    const VkPhysicalDeviceFeatures2* enabled_features; /* the chain the device was created with */
+} crowdgpu_device;
+
+typedef enum crowdgpu_method {
+    CROWDGPU_TWO_PASS = 0,
+    CROWDGPU_TWO_PASS_DIRECT = 1,
+    CROWDGPU_VERTEX_SHADER = 2,
+    CROWDGPU_VERTEX_SHADER_INSTANCED = 3,
+    CROWDGPU_COMPUTE = 4,
+    CROWDGPU_STATIC = 5
+} crowdgpu_method;
+
+typedef struct crowdgpu_renderer_settings {
+    VkFormat color_format, depth_format;
+    VkSampleCountFlagBits samples;
+    crowdgpu_method method;
+    bool gpu_animation, lod, impostors, shadows;
+    float impostor_threshold;
+    uint32_t mesh_capacity, shadow_map_size, frames_in_flight;
+} crowdgpu_renderer_settings;
+
+/* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows. */
+void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* settings);
+
+typedef struct crowdgpu_frame_view {
+    float view[16], projection[16]; /* column-major; projection in Vulkan clip space, depth 0..1 */
+    VkRect2D viewport;
+    float time;
+} crowdgpu_frame_view;
+
+void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
+                      VkExtent2D extent, float time, crowdgpu_frame_view* out);
+
+/* Device bytes a renderer with these settings will allocate for the crowd (0 on failure). */
+uint64_t crowdgpu_memory_needed(VkPhysicalDevice physical_device, crowdgpu_crowd crowd,
+                                const crowdgpu_renderer_settings* settings);
+
+crowdgpu_result crowdgpu_renderer_create(const crowdgpu_device* device, crowdgpu_crowd crowd,
+                                         const crowdgpu_renderer_settings* settings, crowdgpu_renderer* out);
+crowdgpu_result crowdgpu_renderer_record_setup(crowdgpu_renderer renderer, VkCommandBuffer cmd);
+void crowdgpu_renderer_setup_completed(crowdgpu_renderer renderer);
+crowdgpu_result crowdgpu_renderer_record_compute(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot,
+                                                 const crowdgpu_frame_view* view);
+crowdgpu_result crowdgpu_renderer_record_shadows(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
+crowdgpu_result crowdgpu_renderer_record_ground(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
+crowdgpu_result crowdgpu_renderer_record_characters(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
+void crowdgpu_renderer_destroy(crowdgpu_renderer renderer);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

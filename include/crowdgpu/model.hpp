@@ -1,0 +1,50 @@
+// crowdgpu: a skinned character model, Vulkan-free (link crowdgpu::core).
+//
+// A Model is a mesh with a skeleton, its clips, three levels of detail (built at load time with
+// meshoptimizer) and a pose sphere that bounds every pose of every clip. Models are immutable and
+// cheap to copy (shared). The built-in soldier and horse are procedural: no files needed.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace crowdgpu {
+
+namespace detail { struct ModelData; }
+
+class Model {
+public:
+    // The built-in soldier (about 1.8 m; clips walk, run, idle, wave, ...) and horse; `seed` varies
+    // their proportions. Costs a few milliseconds (mesh, clips, LODs, pose sphere).
+    static Model soldier(std::uint32_t seed = 1);
+    static Model horse(std::uint32_t seed = 1);
+    // A skinned glTF 2.0 character (.gltf or .glb). External buffers and images must lie inside
+    // `assetRoot` (empty: the file's own folder). Throws Error(LoadFailed) naming the file and the
+    // problem. Cost: the file's size, plus sampling every clip to bound its poses.
+    static Model fromGltf(const std::string& path, const std::string& assetRoot = {});
+
+    const std::string& name() const;
+    std::uint32_t jointCount() const;
+    std::uint32_t vertexCount() const;
+    std::uint32_t triangleCount() const;
+    float height() const;  // metres (glTF units), rest pose
+    std::uint32_t lodCount() const;
+    std::uint32_t lodTriangles(std::uint32_t lod) const;
+    std::uint32_t clipCount() const;
+    const std::string& clipName(std::uint32_t clip) const;
+    float clipDuration(std::uint32_t clip) const;  // seconds
+    // The clip of this name, or -1.
+    std::int32_t findClip(const std::string& name) const;
+    // What loading left out or changed (a glTF feature the library does not use), one line each.
+    const std::vector<std::string>& notes() const;
+
+    const std::shared_ptr<const detail::ModelData>& data() const { return data_; }
+    explicit Model(std::shared_ptr<const detail::ModelData> data);
+
+private:
+    std::shared_ptr<const detail::ModelData> data_;
+};
+
+}  // namespace crowdgpu

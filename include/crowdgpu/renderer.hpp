@@ -1,0 +1,192 @@
+// crowdgpu: the GPU renderer on a device the host lends it (link crowdgpu::renderer).
+//
+// The host creates the Vulkan instance and device (Vulkan 1.3, with the features deviceRequirements
+// lists), owns every command buffer, queue submission, fence and semaphore, and the images it draws
+// into. The renderer records into the host's command buffers:
+//
+//   recordSetup(cmd)              once (and after setImpostors(true)): uploads, the impostor bake.
+//                                 Submit it before the first frame; call setupCompleted() once that
+//                                 submission has finished (frees its staging memory).
+//   per frame, in frame slot s (0 .. framesInFlight-1, the host's; wait for the slot's previous
+//   frame before recording it again):
+//   recordCompute(cmd, s, view)   outside any rendering pass: motion, culling and LOD, bone
+//                                 palettes, skinning, impostor lists.
+//   recordShadows(cmd, s)         outside any rendering pass: the casters into the renderer's own
+//                                 shadow map (when shadows are on).
+//   recordGround(cmd, s)          optional, inside the host's colour pass: a checkered ground.
+//   recordCharacters(cmd, s)      inside the host's colour pass (dynamic rendering, begun by the host
+//                                 with the colour and depth formats and sample count of `target`).
+//
+// Nothing in the frame path submits, waits or signals. Depth is 0 at the near plane and 1 at the far
+// one, tested with LESS; the projection is Vulkan's (y down). Colour is written as linear RGB: an
+// sRGB or float target shows it right. Not thread-safe: one thread records a renderer.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "crowdgpu/crowd.hpp"
+#include "crowdgpu/error.hpp"
+
+namespace crowdgpu {
+
+namespace detail { struct RendererData; }
+
+// ---- What the device must have ----
+
+struct DeviceRequirements {
+    std::uint32_t apiVersion;  // VK_API_VERSION_1_3
+    std::vector<const char*> extensions;  // device extensions (none today)
+    std::vector<const char*> features;    // names, as in the Vulkan feature structs
+};
+DeviceRequirements deviceRequirements();
+// Sets the features the library needs to VK_TRUE in the host's chain for vkCreateDevice (leaves the
+// others as they are). The structs are the host's; chain them as usual.
+void enableRequiredFeatures(VkPhysicalDeviceFeatures2& features, VkPhysicalDeviceVulkan11Features& vulkan11,
+                            VkPhysicalDeviceVulkan12Features& vulkan12, VkPhysicalDeviceVulkan13Features& vulkan13);
+// Empty when the physical device supports everything needed; else a line naming what it lacks.
+std::string checkPhysicalDevice(VkPhysicalDevice physicalDevice);
+
+// What the host lends. The library destroys none of it; the host destroys it after the renderers.
+struct Device {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    std::uint32_t queueFamily = 0;  // of the queue the host submits the renderer's commands to
+    // The VkPhysicalDeviceFeatures2 chain the device was created with (1.1, 1.2 and 1.3 structs
+    // chained): checked for every feature the library needs.
+    const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
+};
+
+// ---- Settings ----
+
+enum class Method { TwoPass, TwoPassDirect, VertexShader, VertexShaderInstanced, Compute, Static };
+enum class Animation { Gpu, Cpu };
+enum class Culling { Gpu, Cpu, Off };
+
+// The host's colour pass.
+struct TargetFormat {
+    VkFormat color = VK_FORMAT_R8G8B8A8_SRGB;
+    VkFormat depth = VK_FORMAT_D32_SFLOAT;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+};
+
+struct RendererSettings {
+    TargetFormat target;
+    Method method = Method::TwoPass;  // the paper's: fragment-shader skinning, copied to a vertex buffer
+    Animation animation = Animation::Gpu;
+    Culling culling = Culling::Gpu;
+    bool lod = true;
+    float lodThresholds[2] = {150.0f, 50.0f};  // pixels of pose-sphere diameter for LOD 0 and 1
+    float lodHysteresis = 0.1f;
+    bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
+    float impostorThreshold = 32.0f;
+    std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
+    bool shadows = true;
+    std::uint32_t shadowMapSize = 2048;
+    std::uint32_t framesInFlight = 2;
+};
+
+// One frame's view: column-major 4x4 matrices as glm and Vulkan use them (m[column * 4 + row]).
+struct FrameView {
+    float view[16];
+    float projection[16];  // perspective, Vulkan clip space (y down, depth 0..1)
+    VkRect2D viewport;     // pixels of the host's target
+    float time;            // seconds on the crowd's clock
+};
+
+// A view and projection looking from `eye` at `target` (y up), for hosts without their own.
+FrameView lookAt(const float eye[3], const float target[3], float verticalFov, float nearPlane, float farPlane,
+                 VkExtent2D extent, float time);
+
+struct MemoryItem {
+    std::string what;
+    std::uint64_t bytes;
+};
+
+// The characters and triangles drawn per level in a slot's last frame (read after its fence).
+struct FrameCounts {
+    std::uint32_t characters[3];
+    std::uint64_t triangles[3];
+    std::uint32_t impostors;
+    std::uint32_t demoted;  // impostors only because the mesh capacity was full
+};
+
+// This frame's skinned characters, for the host's own passes (G-buffer, outline, picking): bind
+// `positions` at `positionsOffset` and `normals` at `normalsOffset` as vec4 vertex streams, `indices`
+// as uint32 indices, and draw with vkCmdDrawIndexedIndirectCount(draws, 0, drawCount,
+// drawCountOffset, maxDraws, 20). firstInstance of each draw is the character's index. Valid after
+// recordCompute of the frame, for the methods that skin into a buffer (not VertexShader*:
+// `skinned` is false there).
+struct FrameOutput {
+    bool skinned = false;
+    VkBuffer vertices = VK_NULL_HANDLE;
+    VkDeviceSize positionsOffset = 0, normalsOffset = 0;
+    VkBuffer indices = VK_NULL_HANDLE;
+    VkBuffer draws = VK_NULL_HANDLE;
+    VkBuffer drawCount = VK_NULL_HANDLE;
+    VkDeviceSize drawCountOffset = 0;
+    std::uint32_t maxDraws = 0;
+    // Stages and accesses the renderer wrote these with: a host pass reading them needs no barrier of
+    // its own when it runs after recordCompute in the same queue (the renderer's own barrier covers
+    // vertex input and indirect reads); these are for hosts that read them in compute.
+    VkPipelineStageFlags2 writtenBy = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+};
+
+// Called as each pass ends, outside any rendering pass (timestamps, debug labels).
+using PassObserver = std::function<void(VkCommandBuffer cmd, const char* pass)>;
+
+// Device bytes a renderer with these settings takes for this crowd: the sum of what the renderer's
+// constructor allocates, from the same planner. Compare with the device's heap before creating one.
+std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings);
+
+class Renderer {
+public:
+    // Builds pipelines for settings.target and allocates the crowd's buffers; their contents wait in
+    // recordSetup. Throws Error: Unsupported (a feature missing from Device::enabledFeatures, a
+    // format the device cannot render to), OutOfDeviceMemory (over memoryNeeded's budget), or
+    // InvalidArgument. The crowd must outlive the renderer; it reads it at every recordCompute.
+    Renderer(const Device& device, Crowd& crowd, const RendererSettings& settings);
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    bool setupPending() const;
+    void recordSetup(VkCommandBuffer cmd);
+    void setupCompleted();
+
+    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view);
+    void recordShadows(VkCommandBuffer cmd, std::uint32_t slot);
+    void recordGround(VkCommandBuffer cmd, std::uint32_t slot) const;
+    void recordCharacters(VkCommandBuffer cmd, std::uint32_t slot);
+    FrameOutput output() const;
+    FrameCounts counts(std::uint32_t slot) const;
+    void setPassObserver(PassObserver observer);
+
+    // Between frames, with the GPU idle (the host waits for its frames first): these rebuild
+    // resources. setImpostors(true) the first time bakes the atlas: setup work (recordSetup again).
+    void setMethod(Method method);
+    void setShadows(bool on);
+    void setCulling(Culling culling, bool lod);
+    void setImpostors(bool on);
+    void setAnimation(Animation animation);
+    const RendererSettings& settings() const;
+
+    // Device memory by resource, as allocated.
+    std::vector<MemoryItem> memory() const;
+
+    // The library's side (opaque to hosts).
+    explicit Renderer(std::unique_ptr<detail::RendererData> data);
+    detail::RendererData& data() { return *data_; }
+    const detail::RendererData& data() const { return *data_; }
+
+private:
+    std::unique_ptr<detail::RendererData> data_;
+};
+
+}  // namespace crowdgpu

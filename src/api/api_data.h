@@ -1,0 +1,45 @@
+#pragma once
+// What the public handles hold (private: hosts see only the forward declarations), and how library
+// errors become crowdgpu::Error.
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "crowd/crowd.h"
+#include "crowdgpu/crowd.hpp"
+#include "crowdgpu/error.hpp"
+#include "crowdgpu/model.hpp"
+#include "gpu/error.h"
+#include "model/skinned_model.h"
+
+namespace crowdgpu::detail {
+
+struct ModelData {
+    model::SkinnedModel model;
+    std::vector<std::string> notes;
+};
+
+struct CrowdData {
+    std::vector<Model> models;  // keep the internal crowd's models alive
+    crowd::Crowd crowd;
+};
+
+// Runs `f`, turning the library's internal failures into crowdgpu::Error with the same message.
+template <class F>
+auto translated(F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const Error&) {
+        throw;
+    } catch (const gpu::Error& error) {
+        throw Error(static_cast<ErrorCode>(error.kind()), error.what());
+    } catch (const std::bad_alloc&) {
+        throw Error(ErrorCode::OutOfHostMemory, "out of host memory");
+    }
+}
+
+// The internal models of a list of public ones, in order.
+std::vector<const model::SkinnedModel*> internalModels(const std::vector<Model>& models);
+
+}  // namespace crowdgpu::detail

@@ -1,0 +1,236 @@
+// The C API over the C++ one: handles own C++ objects; exceptions become result codes and a
+// per-thread message.
+#include "crowdgpu/crowdgpu.h"
+
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "crowdgpu/crowd.hpp"
+#include "crowdgpu/renderer.hpp"
+
+struct crowdgpu_model_t {
+    crowdgpu::Model model;
+};
+struct crowdgpu_crowd_t {
+    crowdgpu::Crowd crowd;
+};
+struct crowdgpu_renderer_t {
+    crowdgpu::Renderer renderer;
+};
+
+namespace {
+
+thread_local std::string lastError;
+
+// Runs `f`; a failure becomes its code and this thread's message.
+template <class F>
+crowdgpu_result guarded(F&& f) {
+    try {
+        f();
+        return CROWDGPU_OK;
+    } catch (const crowdgpu::Error& error) {
+        lastError = error.what();
+        return static_cast<crowdgpu_result>(error.code());
+    } catch (const std::bad_alloc&) {
+        lastError = "out of host memory";
+        return CROWDGPU_ERROR_OUT_OF_HOST_MEMORY;
+    } catch (const std::exception& error) {
+        lastError = error.what();
+        return CROWDGPU_ERROR_INVALID_ARGUMENT;
+    }
+}
+
+crowdgpu_result invalid(const char* message) {
+    lastError = message;
+    return CROWDGPU_ERROR_INVALID_ARGUMENT;
+}
+
+crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
+    crowdgpu::RendererSettings r;
+    r.target = {s.color_format, s.depth_format, s.samples};
+    r.method = static_cast<crowdgpu::Method>(s.method);
+    r.animation = s.gpu_animation ? crowdgpu::Animation::Gpu : crowdgpu::Animation::Cpu;
+    r.lod = s.lod;
+    r.impostors = s.impostors;
+    r.impostorThreshold = s.impostor_threshold;
+    r.meshCapacity = s.mesh_capacity;
+    r.shadows = s.shadows;
+    r.shadowMapSize = s.shadow_map_size;
+    r.framesInFlight = s.frames_in_flight;
+    return r;
+}
+
+crowdgpu::FrameView viewOf(const crowdgpu_frame_view& v) {
+    crowdgpu::FrameView result;
+    std::memcpy(result.view, v.view, sizeof result.view);
+    std::memcpy(result.projection, v.projection, sizeof result.projection);
+    result.viewport = v.viewport;
+    result.time = v.time;
+    return result;
+}
+
+}  // namespace
+
+extern "C" {
+
+const char* crowdgpu_last_error(void) { return lastError.c_str(); }
+
+crowdgpu_result crowdgpu_model_soldier(uint32_t seed, crowdgpu_model* out) {
+    if (!out) return invalid("crowdgpu_model_soldier: out is NULL");
+    return guarded([&] { *out = new crowdgpu_model_t{crowdgpu::Model::soldier(seed)}; });
+}
+
+crowdgpu_result crowdgpu_model_horse(uint32_t seed, crowdgpu_model* out) {
+    if (!out) return invalid("crowdgpu_model_horse: out is NULL");
+    return guarded([&] { *out = new crowdgpu_model_t{crowdgpu::Model::horse(seed)}; });
+}
+
+crowdgpu_result crowdgpu_model_load_gltf(const char* path, const char* asset_root, crowdgpu_model* out) {
+    if (!out || !path) return invalid("crowdgpu_model_load_gltf: path or out is NULL");
+    return guarded([&] { *out = new crowdgpu_model_t{crowdgpu::Model::fromGltf(path, asset_root ? asset_root : "")}; });
+}
+
+int32_t crowdgpu_model_find_clip(crowdgpu_model model, const char* name) {
+    return model && name ? model->model.findClip(name) : -1;
+}
+
+uint32_t crowdgpu_model_clip_count(crowdgpu_model model) { return model ? model->model.clipCount() : 0; }
+void crowdgpu_model_destroy(crowdgpu_model model) { delete model; }
+
+crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_t model_count, uint32_t count,
+                                           uint32_t seed, crowdgpu_behaviour behaviour, crowdgpu_crowd* out) {
+    if (!out || !models || model_count == 0) return invalid("crowdgpu_crowd_create_grid: no models or out is NULL");
+    return guarded([&] {
+        std::vector<crowdgpu::Model> list;
+        for (uint32_t i = 0; i < model_count; ++i) {
+            if (!models[i]) throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument, "crowdgpu_crowd_create_grid: a NULL model");
+            list.push_back(models[i]->model);
+        }
+        crowdgpu::GridLayout layout;
+        layout.count = count;
+        layout.seed = seed;
+        *out = new crowdgpu_crowd_t{crowdgpu::Crowd::grid(std::move(list), layout, static_cast<crowdgpu::Behaviour>(behaviour))};
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* c, uint32_t* index) {
+    if (!crowd || !c) return invalid("crowdgpu_crowd_spawn: crowd or character is NULL");
+    return guarded([&] {
+        crowdgpu::Character character;
+        character.model = c->model, character.clip = c->clip, character.phase = c->phase, character.speed = c->speed;
+        std::memcpy(character.position, c->position, sizeof character.position);
+        character.heading = c->heading, character.scale = c->scale;
+        std::memcpy(character.tint, c->tint, sizeof character.tint);
+        const uint32_t i = crowd->crowd.spawn(character);
+        if (index) *index = i;
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, float at) {
+    if (!crowd) return invalid("crowdgpu_crowd_move_to: crowd is NULL");
+    return guarded([&] { crowd->crowd.moveTo(character, x, z, at); });
+}
+
+crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, float at, float fade) {
+    if (!crowd) return invalid("crowdgpu_crowd_play: crowd is NULL");
+    return guarded([&] { crowd->crowd.play(character, clip, at, fade); });
+}
+
+crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, float time) {
+    if (!crowd) return invalid("crowdgpu_crowd_advance_to: crowd is NULL");
+    return guarded([&] { crowd->crowd.advanceTo(time); });
+}
+
+uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd) { return crowd ? crowd->crowd.size() : 0; }
+
+void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest) {
+    if (!crowd || !center || !radius || !tallest) return;
+    crowd->crowd.bounds(center, *radius, *tallest);
+}
+
+void crowdgpu_crowd_destroy(crowdgpu_crowd crowd) { delete crowd; }
+
+void crowdgpu_enable_required_features(VkPhysicalDeviceFeatures2* f, VkPhysicalDeviceVulkan11Features* f11,
+                                       VkPhysicalDeviceVulkan12Features* f12, VkPhysicalDeviceVulkan13Features* f13) {
+    if (f && f11 && f12 && f13) crowdgpu::enableRequiredFeatures(*f, *f11, *f12, *f13);
+}
+
+void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
+    if (!s) return;
+    const crowdgpu::RendererSettings d;
+    s->color_format = d.target.color;
+    s->depth_format = d.target.depth;
+    s->samples = d.target.samples;
+    s->method = static_cast<crowdgpu_method>(d.method);
+    s->gpu_animation = d.animation == crowdgpu::Animation::Gpu;
+    s->lod = d.lod;
+    s->impostors = d.impostors;
+    s->shadows = d.shadows;
+    s->impostor_threshold = d.impostorThreshold;
+    s->mesh_capacity = d.meshCapacity;
+    s->shadow_map_size = d.shadowMapSize;
+    s->frames_in_flight = d.framesInFlight;
+}
+
+void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
+                      VkExtent2D extent, float time, crowdgpu_frame_view* out) {
+    if (!eye || !target || !out) return;
+    const crowdgpu::FrameView v = crowdgpu::lookAt(eye, target, vertical_fov, near_plane, far_plane, extent, time);
+    std::memcpy(out->view, v.view, sizeof out->view);
+    std::memcpy(out->projection, v.projection, sizeof out->projection);
+    out->viewport = v.viewport;
+    out->time = v.time;
+}
+
+uint64_t crowdgpu_memory_needed(VkPhysicalDevice physical_device, crowdgpu_crowd crowd,
+                                const crowdgpu_renderer_settings* settings) {
+    uint64_t bytes = 0;
+    if (!crowd || !settings) return invalid("crowdgpu_memory_needed: crowd or settings is NULL"), 0;
+    guarded([&] { bytes = crowdgpu::memoryNeeded(physical_device, crowd->crowd, settingsOf(*settings)); });
+    return bytes;
+}
+
+crowdgpu_result crowdgpu_renderer_create(const crowdgpu_device* device, crowdgpu_crowd crowd,
+                                         const crowdgpu_renderer_settings* settings, crowdgpu_renderer* out) {
+    if (!device || !crowd || !settings || !out) return invalid("crowdgpu_renderer_create: an argument is NULL");
+    return guarded([&] {
+        const crowdgpu::Device d{device->instance, device->physical_device, device->device, device->queue_family,
+                                 device->enabled_features};
+        *out = new crowdgpu_renderer_t{crowdgpu::Renderer(d, crowd->crowd, settingsOf(*settings))};
+    });
+}
+
+crowdgpu_result crowdgpu_renderer_record_setup(crowdgpu_renderer r, VkCommandBuffer cmd) {
+    if (!r) return invalid("crowdgpu_renderer_record_setup: renderer is NULL");
+    return guarded([&] { r->renderer.recordSetup(cmd); });
+}
+
+void crowdgpu_renderer_setup_completed(crowdgpu_renderer r) {
+    if (r) r->renderer.setupCompleted();
+}
+
+crowdgpu_result crowdgpu_renderer_record_compute(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot,
+                                                 const crowdgpu_frame_view* view) {
+    if (!r || !view) return invalid("crowdgpu_renderer_record_compute: renderer or view is NULL");
+    return guarded([&] { r->renderer.recordCompute(cmd, slot, viewOf(*view)); });
+}
+
+crowdgpu_result crowdgpu_renderer_record_shadows(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot) {
+    if (!r) return invalid("crowdgpu_renderer_record_shadows: renderer is NULL");
+    return guarded([&] { r->renderer.recordShadows(cmd, slot); });
+}
+
+crowdgpu_result crowdgpu_renderer_record_ground(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot) {
+    if (!r) return invalid("crowdgpu_renderer_record_ground: renderer is NULL");
+    return guarded([&] { r->renderer.recordGround(cmd, slot); });
+}
+
+crowdgpu_result crowdgpu_renderer_record_characters(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot) {
+    if (!r) return invalid("crowdgpu_renderer_record_characters: renderer is NULL");
+    return guarded([&] { r->renderer.recordCharacters(cmd, slot); });
+}
+
+void crowdgpu_renderer_destroy(crowdgpu_renderer r) { delete r; }
+
+}  // extern "C"

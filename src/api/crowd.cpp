@@ -1,0 +1,115 @@
+// crowdgpu::Crowd over crowd::Crowd: conversions of the public value types, and errors.
+#include "crowdgpu/crowd.hpp"
+
+#include "api/api_data.h"
+
+namespace crowdgpu {
+namespace detail {
+
+std::vector<const model::SkinnedModel*> internalModels(const std::vector<Model>& models) {
+    std::vector<const model::SkinnedModel*> result;
+    for (const Model& m : models) result.push_back(&m.data()->model);
+    return result;
+}
+
+}  // namespace detail
+namespace {
+
+crowd::Character toInternal(const Character& c) {
+    crowd::Character result;
+    result.model = c.model;
+    result.clip = c.clip;
+    result.timeOffset = c.phase;
+    result.speed = c.speed;
+    result.position = glm::vec3(c.position[0], c.position[1], c.position[2]);
+    result.heading = c.heading;
+    result.scale = c.scale;
+    result.tint = glm::vec3(c.tint[0], c.tint[1], c.tint[2]);
+    return result;
+}
+
+crowd::BehaviourSettings behaviourOf(Behaviour behaviour, std::uint32_t seed) {
+    crowd::BehaviourSettings settings;
+    settings.kind = behaviour == Behaviour::March ? crowd::Behaviour::March
+                    : behaviour == Behaviour::Mill ? crowd::Behaviour::Mill
+                                                   : crowd::Behaviour::InPlace;
+    settings.seed = seed;
+    return settings;
+}
+
+std::unique_ptr<detail::CrowdData> makeData(std::vector<Model> models, std::vector<crowd::Character> characters,
+                                            Behaviour behaviour, std::uint32_t seed) {
+    if (models.empty()) throw Error(ErrorCode::InvalidArgument, "a crowd needs at least one model");
+    return detail::translated([&] {
+        const std::vector<const model::SkinnedModel*> pointers = detail::internalModels(models);
+        return std::unique_ptr<detail::CrowdData>(new detail::CrowdData{
+            std::move(models), crowd::Crowd(pointers, std::move(characters), behaviourOf(behaviour, seed))});
+    });
+}
+
+}  // namespace
+
+Crowd::Crowd(std::unique_ptr<detail::CrowdData> data) : data_(std::move(data)) {}
+
+Crowd::Crowd(std::vector<Model> models, std::vector<Character> characters, Behaviour behaviour, std::uint32_t seed) {
+    std::vector<crowd::Character> internal;
+    internal.reserve(characters.size());
+    for (const Character& c : characters) internal.push_back(toInternal(c));
+    data_ = makeData(std::move(models), std::move(internal), behaviour, seed);
+}
+
+Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour behaviour) {
+    if (layout.count == 0) throw Error(ErrorCode::InvalidArgument, "a grid of 0 characters");
+    crowd::LayoutOptions options;
+    options.count = layout.count;
+    options.seed = layout.seed;
+    options.weights = layout.weights;
+    options.clips.assign(layout.clips.begin(), layout.clips.end());
+    options.randomClips = layout.randomClips;
+    options.formation = layout.formation;
+    options.scaleVariation = layout.scaleVariation;
+    options.tintVariation = layout.tintVariation;
+    std::vector<crowd::Character> characters = detail::translated(
+        [&] { return crowd::gridLayout(detail::internalModels(models), options); });
+    return Crowd(makeData(std::move(models), std::move(characters), behaviour, layout.seed));
+}
+
+Crowd::~Crowd() = default;
+Crowd::Crowd(Crowd&&) noexcept = default;
+Crowd& Crowd::operator=(Crowd&&) noexcept = default;
+
+std::uint32_t Crowd::size() const { return data_->crowd.size(); }
+const std::vector<Model>& Crowd::models() const { return data_->models; }
+
+std::uint32_t Crowd::spawn(const Character& character) {
+    return detail::translated([&] { return data_->crowd.spawn(toInternal(character)); });
+}
+
+void Crowd::moveTo(std::uint32_t character, float x, float z, float at, std::int32_t gait, float rate) {
+    detail::translated([&] { data_->crowd.moveTo(character, glm::vec2(x, z), at, gait, rate); });
+}
+
+void Crowd::play(std::uint32_t character, std::int32_t clip, float at, float fade, float rate) {
+    detail::translated([&] { data_->crowd.play(character, clip, at, fade, rate); });
+}
+
+void Crowd::advanceTo(float time) {
+    detail::translated([&] { data_->crowd.advanceTo(time); });
+}
+
+CharacterState Crowd::stateAt(std::uint32_t character, float time) const {
+    if (character >= size())
+        throw Error(ErrorCode::InvalidArgument, "no character " + std::to_string(character) + " in a crowd of " +
+                                                    std::to_string(size()));
+    const crowd::MotionState s = data_->crowd.stateAt(character, time);
+    return {{s.position.x, s.position.y, s.position.z}, s.heading, s.clipFrom, s.clipTo, s.weight, s.phase};
+}
+
+void Crowd::bounds(float center[3], float& radius, float& tallest) const {
+    const glm::vec3 c = data_->crowd.center();
+    center[0] = c.x, center[1] = c.y, center[2] = c.z;
+    radius = data_->crowd.radius();
+    tallest = data_->crowd.tallestHeight();
+}
+
+}  // namespace crowdgpu

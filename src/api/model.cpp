@@ -1,0 +1,75 @@
+// crowdgpu::Model: the built-in and glTF characters, with their levels of detail and pose sphere.
+#include "crowdgpu/model.hpp"
+
+#include "api/api_data.h"
+#include "crowd/pose_bounds.h"
+#include "model/gltf_loader.h"
+#include "model/lod_builder.h"
+#include "model/procedural_models.h"
+
+namespace crowdgpu {
+namespace {
+
+// What every model gets before a crowd uses it: levels of detail (which reorder its vertices) and
+// the sphere that bounds every pose (culling).
+Model finish(model::SkinnedModel model, std::vector<std::string> notes) {
+    model::buildLods(model);
+    model.poseSphere = crowd::computePoseSphere(model);
+    return Model(std::make_shared<const detail::ModelData>(detail::ModelData{std::move(model), std::move(notes)}));
+}
+
+}  // namespace
+
+Model::Model(std::shared_ptr<const detail::ModelData> data) : data_(std::move(data)) {}
+
+Model Model::soldier(std::uint32_t seed) {
+    return detail::translated([&] { return finish(model::makeSoldier(seed), {}); });
+}
+
+Model Model::horse(std::uint32_t seed) {
+    return detail::translated([&] { return finish(model::makeHorse(seed), {}); });
+}
+
+Model Model::fromGltf(const std::string& path, const std::string& assetRoot) {
+    return detail::translated([&] {
+        std::vector<std::string> notes;
+        model::SkinnedModel loaded;
+        try {
+            loaded = model::loadGltf(path, &notes, assetRoot);
+        } catch (const gpu::Error& error) {
+            throw Error(ErrorCode::LoadFailed, error.what());
+        }
+        return finish(std::move(loaded), std::move(notes));
+    });
+}
+
+const std::string& Model::name() const { return data_->model.name; }
+std::uint32_t Model::jointCount() const { return static_cast<std::uint32_t>(data_->model.skeleton.jointCount()); }
+std::uint32_t Model::vertexCount() const { return static_cast<std::uint32_t>(data_->model.vertices.size()); }
+std::uint32_t Model::triangleCount() const { return static_cast<std::uint32_t>(data_->model.triangleCount()); }
+float Model::height() const { return data_->model.height(); }
+std::uint32_t Model::lodCount() const { return static_cast<std::uint32_t>(data_->model.lods.size()); }
+
+std::uint32_t Model::lodTriangles(std::uint32_t lod) const {
+    if (lod >= data_->model.lods.size())
+        throw Error(ErrorCode::InvalidArgument, name() + ": no level of detail " + std::to_string(lod));
+    return static_cast<std::uint32_t>(data_->model.lods[lod].indices.size() / 3);
+}
+
+std::uint32_t Model::clipCount() const { return static_cast<std::uint32_t>(data_->model.clips.size()); }
+
+const std::string& Model::clipName(std::uint32_t clip) const {
+    if (clip >= data_->model.clips.size())
+        throw Error(ErrorCode::InvalidArgument, name() + ": no clip " + std::to_string(clip));
+    return data_->model.clips[clip].name;
+}
+
+float Model::clipDuration(std::uint32_t clip) const {
+    clipName(clip);  // checks the index
+    return data_->model.clips[clip].duration;
+}
+
+std::int32_t Model::findClip(const std::string& clipName) const { return data_->model.findClip(clipName); }
+const std::vector<std::string>& Model::notes() const { return data_->notes; }
+
+}  // namespace crowdgpu

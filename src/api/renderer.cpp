@@ -1,0 +1,231 @@
+// crowdgpu::Renderer over frame::CrowdRecorder on a borrowed device.
+#include "crowdgpu/renderer.hpp"
+
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "api/api_data.h"
+#include "api/device_requirements.h"
+#include "api/renderer_data.h"
+#include "frame/memory_plan.h"
+#include "gpu/buffer.h"
+
+namespace crowdgpu {
+namespace detail {
+
+skin::Method internalMethod(Method method) {
+    switch (method) {
+        case Method::TwoPass: return skin::Method::TwoPass;
+        case Method::TwoPassDirect: return skin::Method::TwoPassDirect;
+        case Method::VertexShader: return skin::Method::VertexShader;
+        case Method::VertexShaderInstanced: return skin::Method::VertexShaderInstanced;
+        case Method::Compute: return skin::Method::Compute;
+        case Method::Static: return skin::Method::Static;
+    }
+    throw Error(ErrorCode::InvalidArgument, "unknown skinning method " + std::to_string(static_cast<int>(method)));
+}
+
+render::CullSettings cullSettings(const RendererSettings& s) {
+    render::CullSettings cull;
+    cull.mode = s.culling == Culling::Cpu ? render::CullMode::Cpu
+                : s.culling == Culling::Off ? render::CullMode::Off
+                                            : render::CullMode::Gpu;
+    cull.lod = s.lod;
+    cull.lodThresholds[0] = s.lodThresholds[0];
+    cull.lodThresholds[1] = s.lodThresholds[1];
+    cull.hysteresis = s.lodHysteresis;
+    cull.impostors = s.impostors;
+    cull.impostorThreshold = s.impostorThreshold;
+    return cull;
+}
+
+frame::RecorderOptions rendererOptions(const RendererSettings& s) {
+    if (!(s.lodThresholds[0] > s.lodThresholds[1] && s.lodThresholds[1] > 0.0f))
+        throw Error(ErrorCode::InvalidArgument, "LOD thresholds must fall: lodThresholds[0] > lodThresholds[1] > 0");
+    if (s.impostors && !(s.impostorThreshold > 0.0f && s.impostorThreshold < s.lodThresholds[1]))
+        throw Error(ErrorCode::InvalidArgument, "the impostor threshold must lie between 0 and lodThresholds[1]");
+    if (!(s.lodHysteresis >= 0.0f && s.lodHysteresis < 1.0f))
+        throw Error(ErrorCode::InvalidArgument, "LOD hysteresis must lie in [0, 1)");
+    if (s.shadowMapSize == 0 || s.shadowMapSize > 16384)
+        throw Error(ErrorCode::InvalidArgument, "shadow map size must be 1 to 16384 texels");
+    frame::RecorderOptions o;
+    o.target = {s.target.color, s.target.depth, s.target.samples};
+    o.method = internalMethod(s.method);
+    o.animation = s.animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu;
+    o.cull = cullSettings(s);
+    o.shadows = s.shadows;
+    o.shadowMapSize = s.shadowMapSize;
+    o.framesInFlight = s.framesInFlight;
+    o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
+    return o;
+}
+
+}  // namespace detail
+
+namespace {
+
+render::FrameView internalView(const FrameView& v) {
+    render::FrameView view;
+    view.view = glm::make_mat4(v.view);
+    view.projection = glm::make_mat4(v.projection);
+    view.viewport = v.viewport;
+    view.time = v.time;
+    return view;
+}
+
+}  // namespace
+
+FrameView lookAt(const float eye[3], const float target[3], float verticalFov, float nearPlane, float farPlane,
+                 VkExtent2D extent, float time) {
+    render::Camera camera;
+    camera.eye = glm::make_vec3(eye);
+    camera.target = glm::make_vec3(target);
+    camera.verticalFov = verticalFov;
+    camera.nearPlane = nearPlane;
+    camera.farPlane = farPlane;
+    const render::FrameView v = render::frameViewOf(camera, extent, time);
+    FrameView result;
+    std::memcpy(result.view, glm::value_ptr(v.view), sizeof result.view);
+    std::memcpy(result.projection, glm::value_ptr(v.projection), sizeof result.projection);
+    result.viewport = v.viewport;
+    result.time = time;
+    return result;
+}
+
+std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {
+    return detail::translated([&] {
+        const gpu::VulkanContext limits(gpu::BorrowedHandles{VK_NULL_HANDLE, physicalDevice, VK_NULL_HANDLE, 0, true});
+        return frame::planMemory(limits, crowd.data().crowd, detail::rendererOptions(settings)).total();
+    });
+}
+
+namespace detail {
+
+Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::RecorderOptions& options,
+                      const RendererSettings& settings) {
+    auto data = std::make_unique<RendererData>();
+    translated([&] {
+        data->context = std::make_unique<gpu::VulkanContext>(checkBorrowedDevice(device));
+        checkTargetFormat(device.physicalDevice, settings.target);
+        if (options.method == skin::Method::TwoPassDirect && !data->context->fragmentStores)
+            throw Error(ErrorCode::Unsupported, "method two-pass-direct needs the feature fragmentStoresAndAtomics");
+        const std::uint64_t needed = frame::planMemory(*data->context, crowd, options).total();
+        const std::uint64_t available = data->context->deviceLocalBytes();
+        if (needed > available)
+            throw Error(ErrorCode::OutOfDeviceMemory,
+                        "a crowd of " + std::to_string(crowd.size()) + " characters needs " + gpu::formatBytes(needed) +
+                            " of device memory with these settings; " + data->context->description.name + " has " +
+                            gpu::formatBytes(available));
+        data->settings = settings;
+        data->frame = std::make_unique<frame::CrowdRecorder>(*data->context, crowd, options);
+    });
+    return Renderer(std::move(data));
+}
+
+}  // namespace detail
+
+Renderer::Renderer(std::unique_ptr<detail::RendererData> data) : data_(std::move(data)) {}
+
+Renderer::Renderer(const Device& device, Crowd& crowd, const RendererSettings& settings)
+    : Renderer(detail::makeRenderer(device, crowd.data().crowd, detail::rendererOptions(settings), settings)) {}
+
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+bool Renderer::setupPending() const { return data_->frame->setupPending(); }
+
+void Renderer::recordSetup(VkCommandBuffer cmd) {
+    detail::translated([&] { data_->frame->recordSetup(cmd); });
+}
+
+void Renderer::setupCompleted() { data_->frame->setupCompleted(); }
+
+void Renderer::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view) {
+    detail::translated([&] { data_->frame->recordCompute(cmd, slot, internalView(view)); });
+}
+
+void Renderer::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
+    detail::translated([&] { data_->frame->recordShadows(cmd, slot); });
+}
+
+void Renderer::recordGround(VkCommandBuffer cmd, std::uint32_t slot) const {
+    detail::translated([&] { data_->frame->recordGround(cmd, slot); });
+}
+
+void Renderer::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
+    detail::translated([&] { data_->frame->recordCharacters(cmd, slot); });
+}
+
+FrameOutput Renderer::output() const {
+    const frame::FrameOutput o = data_->frame->output();
+    FrameOutput out;
+    out.skinned = o.input == render::DrawInput::SkinnedVertices && o.vertices.buffer;
+    if (out.skinned) {
+        out.vertices = o.vertices.buffer->buffer;
+        out.normalsOffset = o.vertices.normalsOffset;
+    }
+    out.indices = o.indices;
+    out.draws = o.draws;
+    out.drawCount = o.drawCount;
+    out.drawCountOffset = o.drawCountOffset;
+    out.maxDraws = o.maxDraws;
+    return out;
+}
+
+FrameCounts Renderer::counts(std::uint32_t slot) const {
+    if (slot >= data_->settings.framesInFlight)
+        throw Error(ErrorCode::InvalidArgument, "counts: frame slot " + std::to_string(slot) + " out of range");
+    const render::LodCounts c = data_->frame->countsOf(slot);
+    FrameCounts result{};
+    for (int l = 0; l < 3; ++l) result.characters[l] = c.characters[l], result.triangles[l] = c.triangles[l];
+    result.impostors = c.impostors;
+    result.demoted = c.demoted;
+    return result;
+}
+
+void Renderer::setPassObserver(PassObserver observer) { data_->frame->setPassObserver(std::move(observer)); }
+
+void Renderer::setMethod(Method method) {
+    detail::translated([&] {
+        data_->frame->setMethod(detail::internalMethod(method));
+        data_->settings.method = method;
+    });
+}
+
+void Renderer::setShadows(bool on) {
+    data_->frame->setShadows(on);
+    data_->settings.shadows = on;
+}
+
+void Renderer::setCulling(Culling culling, bool lod) {
+    RendererSettings s = data_->settings;
+    s.culling = culling;
+    s.lod = lod;
+    detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
+    data_->settings = s;
+}
+
+void Renderer::setImpostors(bool on) {
+    RendererSettings s = data_->settings;
+    s.impostors = on;
+    detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
+    data_->settings = s;
+}
+
+void Renderer::setAnimation(Animation animation) {
+    data_->frame->setAnimation(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
+    data_->settings.animation = animation;
+}
+
+const RendererSettings& Renderer::settings() const { return data_->settings; }
+
+std::vector<MemoryItem> Renderer::memory() const {
+    std::vector<MemoryItem> items;
+    for (const skin::MemoryItem& item : data_->frame->memory()) items.push_back({item.what, item.bytes});
+    return items;
+}
+
+}  // namespace crowdgpu

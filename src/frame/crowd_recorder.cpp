@@ -1,0 +1,261 @@
+#include "frame/crowd_recorder.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <string>
+
+#include "gpu/pipeline.h"
+#include "gpu/setup_queue.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+
+namespace frame {
+namespace {
+
+// The cap applies only when impostors are there from the start to take the characters beyond it.
+std::uint32_t meshCapacityOf(const RecorderOptions& options, const crowd::Crowd& crowd) {
+    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
+                                                                                                    : 0u;
+}
+
+std::uint32_t checkedFramesInFlight(std::uint32_t frames) {
+    if (frames == 0 || frames > 8) throw gpu::Error("frames in flight must be 1 to 8, not " + std::to_string(frames));
+    return frames;
+}
+
+}  // namespace
+
+CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options)
+    : context_(context),
+      crowd_(crowd),
+      target_(options.target),
+      framesInFlight_(checkedFramesInFlight(options.framesInFlight)),
+      pool_(context, crowd.models()),
+      buffers_(context, crowd, options.framesInFlight),
+      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityOf(options, crowd)),
+      cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
+      animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
+      maxTargetDimension_(options.maxTargetDimension),
+      shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
+      shadowMap_(context, options.shadowMapSize),
+      scene_(context, options.framesInFlight, pool_, shadowMap_, options.target),
+      draw_(context, pool_, buffers_, lists_, scene_.setLayout(), options.target),
+      method_(createMethod(options.method)),
+      impostorSettings_(options.impostorSettings),
+      atlas_(options.atlas),
+      cull_(options.cull),
+      animation_(options.animation),
+      shadows_(options.shadows),
+      stages_(options.framesInFlight, Stage::Idle),
+      views_(options.framesInFlight) {
+    if (cull_.impostors) enableImpostors();
+}
+
+CrowdRecorder::~CrowdRecorder() = default;
+
+std::unique_ptr<skin::SkinningMethod> CrowdRecorder::createMethod(skin::Method method) const {
+    return skin::createSkinningMethod(method, {context_, pool_, buffers_, lists_, maxTargetDimension_});
+}
+
+bool CrowdRecorder::setupPending() const {
+    const gpu::SetupQueue* setup = context_.deferredSetup();
+    return setup && setup->pending();
+}
+
+void CrowdRecorder::recordSetup(VkCommandBuffer cmd) {
+    if (gpu::SetupQueue* setup = context_.deferredSetup()) setup->recordInto(cmd);
+}
+
+void CrowdRecorder::setupCompleted() {
+    if (gpu::SetupQueue* setup = context_.deferredSetup()) setup->releaseRecorded();
+}
+
+void CrowdRecorder::checkSlot(const char* call, std::uint32_t slot) const {
+    if (slot >= framesInFlight_)
+        throw gpu::Error(std::string(call) + ": frame slot " + std::to_string(slot) + " out of range (the renderer has " +
+                         std::to_string(framesInFlight_) + " frames in flight)");
+}
+
+void CrowdRecorder::checkStage(const char* call, std::uint32_t slot, Stage needed) const {
+    checkSlot(call, slot);
+    if (stages_[slot] < needed)
+        throw gpu::Error(std::string(call) + ": slot " + std::to_string(slot) +
+                         " has no recordCompute for this frame (record compute, then shadows, then draw)",
+                         gpu::ErrorKind::WrongOrder);
+}
+
+void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const render::FrameView& view) {
+    checkSlot("recordCompute", slot);
+    if (setupPending())
+        throw gpu::Error("recordCompute: setup work waits to be recorded (call recordSetup and submit it first)",
+                         gpu::ErrorKind::WrongOrder);
+    if (!render::isPerspectiveView(view))
+        throw gpu::Error("recordCompute: the view or projection matrix is not a finite perspective view");
+    if (view.viewport.extent.width == 0 || view.viewport.extent.height == 0)
+        throw gpu::Error("recordCompute: the viewport is empty");
+    views_[slot] = view;
+
+    // The CPU path samples every character's clips here; the GPU path moves them in its passes.
+    const std::optional<render::AnimationPath> path = animationThisFrame();
+    if (path == render::AnimationPath::Cpu)
+        crowd_.animate(view.time, buffers_.boneStaging(slot), buffers_.boneOffsets(), buffers_.mutableRecords());
+    else if (cull_.mode == render::CullMode::Cpu)
+        buffers_.updateRecords(crowd_, view.time);  // the CPU reference culls from CPU-side records
+
+    if (path == render::AnimationPath::Cpu) {
+        buffers_.recordCpuAnimationUpload(cmd, slot);
+        gpu::passDone(passes_, cmd, "upload");
+    } else if (path == render::AnimationPath::Gpu) {
+        animationPass_.recordMotion(cmd, slot, view.time);
+        gpu::passDone(passes_, cmd, "motion");
+    }
+    const bool perCharacterDraws = method_->drawInput() == render::DrawInput::BindPosePerCharacter;
+    cullPass_.record(cmd, slot, cullUniforms(view), cull_.mode, method_->fixedLayout(), perCharacterDraws);
+    gpu::passDone(passes_, cmd, "cull");
+    if (path == render::AnimationPath::Gpu) {
+        animationPass_.recordPalettes(cmd);
+        gpu::passDone(passes_, cmd, "palette");
+    }
+    method_->recordSkinning(cmd, passes_);
+    if (impostorDraw_) impostorDraw_->recordDraws(cmd);
+    if (!shadows_ && !shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
+    shadowMapReady_ = shadowMapReady_ || !shadows_;
+    updateUniforms(slot, view);
+    stages_[slot] = Stage::Computed;
+}
+
+std::optional<render::AnimationPath> CrowdRecorder::animationThisFrame() const {
+    if (!method_->needsAnimation()) return std::nullopt;
+    return method_->fixedLayout() ? render::AnimationPath::Cpu : animation_;
+}
+
+gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) const {
+    const render::Camera camera = render::cameraOf(view);
+    gpu::CullUniforms uniforms = render::makeCullUniforms(
+        cull_, view.projection * view.view, camera.eye, camera.verticalFov, view.viewport.extent.height, crowd_.size(),
+        lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
+    // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too.
+    uniforms.limits.y = shadows_ ? 1u : 0u;
+    uniforms.light = glm::vec4(render::lightDirection(), 0.0f);
+    uniforms.limits.z = lists_.meshCapacity();
+    return uniforms;
+}
+
+void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& view) {
+    const render::Camera camera = render::cameraOf(view);
+    const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(view), shape_, render::lightDirection());
+    scene_.updateLight(slot, render::makeSceneUniforms(light, pool_.palette(), pool_.texturedMaterials(), 0.0f));
+    scene_.update(slot, render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
+                                                  pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f), light,
+                                                  shadows_, shadowMap_.size()));
+}
+
+void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
+    checkStage("recordShadows", slot, Stage::Computed);
+    if (!shadows_) return;
+    // The same draws, skinned vertices and methods as the colour pass, seen from the light.
+    const render::Camera camera = render::cameraOf(views_[slot]);
+    shadowMap_.beginRendering(cmd);
+    const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
+    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
+                 render::CharacterDraw::Target::ShadowMap);
+    shadowMap_.endRendering(cmd);
+    shadowMapReady_ = true;
+    stages_[slot] = Stage::Shadowed;
+    gpu::passDone(passes_, cmd, "shadow");
+}
+
+void CrowdRecorder::recordGround(VkCommandBuffer cmd, std::uint32_t slot) const {
+    checkStage("recordGround", slot, Stage::Computed);
+    const render::FrameView& view = views_[slot];
+    const render::Camera camera = render::cameraOf(view);
+    gpu::setViewportAndScissor(cmd, view.viewport);
+    const render::ScenePush push{glm::vec4(camera.eye, 1.0f),
+                                 glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
+    scene_.recordGround(cmd, slot, push);
+}
+
+void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
+    checkStage("recordCharacters", slot, Stage::Computed);
+    if (shadows_ && stages_[slot] != Stage::Shadowed)
+        throw gpu::Error("recordCharacters: slot " + std::to_string(slot) +
+                         " has shadows on but no recordShadows for this frame (record it before the colour pass)",
+                         gpu::ErrorKind::WrongOrder);
+    const render::FrameView& view = views_[slot];
+    const render::Camera camera = render::cameraOf(view);
+    gpu::setViewportAndScissor(cmd, view.viewport);
+    const render::ScenePush push{glm::vec4(camera.eye, 1.0f),
+                                 glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
+    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push);
+    // Far characters (and those over the mesh-level cap): after the meshes, depth-tested against them.
+    if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push);
+    stages_[slot] = Stage::Idle;
+}
+
+FrameOutput CrowdRecorder::output() const {
+    FrameOutput out;
+    out.input = method_->drawInput();
+    out.vertices = method_->skinnedVertices();
+    out.indices = pool_.indices().buffer;
+    out.draws = lists_.draws().buffer;
+    out.drawCount = lists_.totals().buffer;
+    out.drawCountOffset = offsetof(gpu::DrawTotals, drawCount);
+    out.maxDraws = lists_.drawCapacity();
+    out.characters = buffers_.characters().buffer;
+    return out;
+}
+
+void CrowdRecorder::setCull(const render::CullSettings& cull) {
+    cull_ = cull;
+    if (cull_.impostors) enableImpostors();
+}
+
+void CrowdRecorder::enableImpostors() {
+    if (impostorDraw_) return;
+    if (!atlas_) {
+        // The bake reads the palette and textures through a scene set: slot 0's (the same in every slot).
+        scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), pool_.palette(), pool_.texturedMaterials(), 0.0f));
+        atlas_ = std::make_shared<render::ImpostorAtlas>(context_, pool_, crowd_.models(), scene_.setLayout(),
+                                                         scene_.set(0), impostorSettings_);
+    } else if (atlas_->models().size() != pool_.modelCount()) {
+        throw gpu::Error("impostors: the atlas given was baked for other models");
+    }
+    impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout(),
+                                                           target_);
+}
+
+void CrowdRecorder::setMethod(skin::Method method) {
+    method_.reset();
+    method_ = createMethod(method);
+}
+
+std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
+    std::vector<skin::MemoryItem> items = {{"geometry pool (vertices, LOD indices, textures)", pool_.bytes()},
+                                           {"character records and bone matrices", buffers_.deviceBytes()},
+                                           {"clip library (GPU animation)", animationPass_.libraryBytes()},
+                                           {"motion segments (GPU animation)", animationPass_.segmentBytes()},
+                                           {"culling lists and draw commands", lists_.bytes()},
+                                           {"shadow map", shadowMap_.bytes()}};
+    if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
+    if (impostorDraw_) items.push_back({"impostor quad indices and draws", impostorDraw_->bytes()});
+    for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
+    return items;
+}
+
+std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
+    const double n = std::max(crowd_.size(), 1u);
+    const double state = static_cast<double>(buffers_.characters().size + animationPass_.segmentBytes() +
+                                             lists_.lodState().size + lists_.impostorList().size +
+                                             lists_.characterDraws().size);
+    double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
+    for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
+    const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
+                                             (impostorDraw_ ? impostorDraw_->bytes() : 0u));
+    return {{"state", state / n},
+            {"bones", static_cast<double>(buffers_.bones().size) / n},
+            {"mesh slots", meshSlots / n},
+            {"atlas", atlas_ ? static_cast<double>(atlas_->bytes()) / n : 0.0},
+            {"fixed", fixed / n}};
+}
+
+}  // namespace frame

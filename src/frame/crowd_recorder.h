@@ -1,0 +1,164 @@
+#pragma once
+// The crowd's frame as record calls into command buffers somebody else owns and submits:
+//   recordSetup       uploads and the impostor bake (once, and again after setCull turns impostors on)
+//   recordCompute     outside any rendering pass: CPU animation upload or GPU motion -> cull and LOD
+//                     -> GPU palettes -> skinning (the method) -> impostor lists -> shadow map clear
+//   recordShadows     the shadow casters into the renderer's own shadow map (a depth pass of its own)
+//   recordGround      inside the host's colour pass: the checkered ground (optional)
+//   recordCharacters  inside the host's colour pass: the characters, then the impostors
+// Nothing here submits, waits or signals. A frame slot's resources (bone staging, readback of the
+// level counts, uniforms) are reused when the slot comes round again: the host must have waited for
+// that slot's previous frame first. The crowd is planned by its owner (crowd::Crowd::advanceTo).
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "crowd/crowd.h"
+#include "gpu/pass_observer.h"
+#include "render/animation_pass.h"
+#include "render/camera.h"
+#include "render/camera_path.h"
+#include "render/character_draw.h"
+#include "render/crowd_buffers.h"
+#include "render/cull_pass.h"
+#include "render/draw_lists.h"
+#include "render/frame_view.h"
+#include "render/geometry_pool.h"
+#include "render/impostor_atlas.h"
+#include "render/impostor_draw.h"
+#include "render/scene_pass.h"
+#include "render/shadow_map.h"
+#include "render/target_format.h"
+#include "skin/skinning_method.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace frame {
+
+struct RecorderOptions {
+    render::TargetFormat target;  // the colour pass recordCharacters draws into
+    skin::Method method = skin::Method::TwoPass;
+    render::AnimationPath animation = render::AnimationPath::Gpu;
+    render::CullSettings cull;
+    bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
+    std::uint32_t shadowMapSize = 2048;  // texels per side
+    std::uint32_t framesInFlight = 2;
+    std::uint32_t maxTargetDimension = 0;  // 0: device limit
+    // With impostors on at construction (cull.impostors), the most characters drawn at a mesh level
+    // (LOD 0-2) in a frame: skinned vertices, visible lists and draws are sized for it, and culling
+    // demotes the characters beyond it to impostors. 0, or a crowd no larger: no cap.
+    std::uint32_t meshCapacity = 0;
+    render::ImpostorSettings impostorSettings;
+    // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
+    std::shared_ptr<const render::ImpostorAtlas> atlas;
+};
+
+// Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):
+// draw with the method's vertices and the geometry pool's indices from the indirect commands.
+struct FrameOutput {
+    render::DrawInput input = render::DrawInput::SkinnedVertices;
+    render::SkinnedVertices vertices;  // skinned positions and normals (DrawInput::SkinnedVertices)
+    VkBuffer indices = VK_NULL_HANDLE;  // uint32, every model and LOD
+    VkBuffer draws = VK_NULL_HANDLE;    // VkDrawIndexedIndirectCommand per visible (character, LOD)
+    VkBuffer drawCount = VK_NULL_HANDLE;  // uint32 count of `draws`, at drawCountOffset
+    VkDeviceSize drawCountOffset = 0;
+    std::uint32_t maxDraws = 0;
+    VkBuffer characters = VK_NULL_HANDLE;  // CharacterRecord per character (firstInstance names it)
+};
+
+class CrowdRecorder {
+public:
+    // The crowd must outlive the renderer. Pipelines are built for options.target.
+    CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options);
+    ~CrowdRecorder();
+    CrowdRecorder(const CrowdRecorder&) = delete;
+    CrowdRecorder& operator=(const CrowdRecorder&) = delete;
+
+    // Whether setup commands wait to be recorded (on a borrowed device; a program's own device
+    // runs them at once).
+    bool setupPending() const;
+    void recordSetup(VkCommandBuffer cmd);
+    // The submission recordSetup went into has finished: its staging memory is freed.
+    void setupCompleted();
+
+    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const render::FrameView& view);
+    void recordShadows(VkCommandBuffer cmd, std::uint32_t slot);
+    void recordGround(VkCommandBuffer cmd, std::uint32_t slot) const;
+    void recordCharacters(VkCommandBuffer cmd, std::uint32_t slot);
+    void setPassObserver(gpu::PassObserver observer) { passes_ = std::move(observer); }
+    FrameOutput output() const;
+
+    // Between frames, with the GPU idle (the host's decision): the skinning method, culling and
+    // LOD settings (the first switch to impostors bakes the atlas: setup work), shadows, animation path.
+    void setMethod(skin::Method method);
+    void setCull(const render::CullSettings& cull);
+    const render::CullSettings& cull() const { return cull_; }
+    void setShadows(bool on) { shadows_ = on; }
+    bool shadows() const { return shadows_; }
+    void setAnimation(render::AnimationPath path) { animation_ = path; }
+    render::AnimationPath animation() const { return animation_; }
+
+    std::uint32_t framesInFlight() const { return framesInFlight_; }
+    // The levels drawn in the slot's last frame: read once the host has waited for it.
+    render::LodCounts countsOf(std::uint32_t slot) const { return lists_.countsOf(slot); }
+    skin::SkinningMethod& method() { return *method_; }
+    const render::GeometryPool& pool() const { return pool_; }
+    const render::CrowdBuffers& buffers() const { return buffers_; }
+    const render::DrawLists& drawLists() const { return lists_; }
+    const render::CullPass& cullPass() const { return cullPass_; }
+    std::shared_ptr<const render::ImpostorAtlas> impostorAtlas() const { return atlas_; }
+    const render::CrowdShape& shape() const { return shape_; }
+    // What the cull pass gets for this view and the current settings (the CPU reference takes the same).
+    gpu::CullUniforms cullUniforms(const render::FrameView& view) const;
+    // Device memory of the crowd's buffers and the method's resources.
+    std::vector<skin::MemoryItem> memory() const;
+    // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
+    // impostor-list entry, the vs baseline's draw slot), "bones" (its bone block), "mesh slots" (visible
+    // lists, draws and the method's skinned vertices, sized for the mesh-level capacity), "atlas" (the
+    // impostor atlas shared by all), "fixed" (geometry, clip library, shadow map).
+    std::map<std::string, double> memoryPerCharacter() const;
+
+private:
+    enum class Stage { Idle, Computed, Shadowed };
+    void checkSlot(const char* call, std::uint32_t slot) const;
+    void checkStage(const char* call, std::uint32_t slot, Stage needed) const;
+    // The path this frame takes: none when the method no longer reads bones; the CPU for the fixed
+    // layout's one frame (it needs every character's bones, not only the visible ones).
+    std::optional<render::AnimationPath> animationThisFrame() const;
+    void enableImpostors();
+    void updateUniforms(std::uint32_t slot, const render::FrameView& view);
+    std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
+
+    const gpu::VulkanContext& context_;
+    crowd::Crowd& crowd_;
+    render::TargetFormat target_;
+    std::uint32_t framesInFlight_;
+    render::GeometryPool pool_;
+    render::CrowdBuffers buffers_;
+    render::DrawLists lists_;
+    render::CullPass cullPass_;
+    render::AnimationPass animationPass_;
+    std::uint32_t maxTargetDimension_;
+    render::CrowdShape shape_;
+    render::ShadowMap shadowMap_;
+    render::ScenePass scene_;
+    render::CharacterDraw draw_;
+    std::unique_ptr<skin::SkinningMethod> method_;
+    render::ImpostorSettings impostorSettings_;
+    std::shared_ptr<const render::ImpostorAtlas> atlas_;
+    std::unique_ptr<render::ImpostorDraw> impostorDraw_;
+    render::CullSettings cull_;
+    render::AnimationPath animation_;
+    bool shadows_;
+    bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
+    gpu::PassObserver passes_;
+    std::vector<Stage> stages_;              // per slot: how far this frame has been recorded
+    std::vector<render::FrameView> views_;   // per slot: the view recordCompute was given
+};
+
+}  // namespace frame

@@ -1,0 +1,96 @@
+#include "frame/memory_plan.h"
+
+#include <algorithm>
+
+#include "gpu/vulkan_context.h"
+#include "skin/skin_target_layout.h"
+
+namespace frame {
+namespace {
+
+template <typename T>
+std::uint64_t tableBytes(const std::vector<T>& table) {
+    return std::max<std::uint64_t>(1, table.size()) * sizeof(T);  // empty tables upload one element
+}
+
+std::uint64_t textureBytes(const model::SkinnedModel& model) {
+    const model::SkinnedModel::Texture& t = model.baseColorTexture;
+    return t.width > 0 && t.height > 0 && !t.rgba.empty() ? std::uint64_t{t.width} * t.height * 4 : 0;
+}
+
+// Bind-pose vertices, indices of every LOD, texture coordinates, the model table, textures (a white
+// one for untextured models): render::GeometryPool's buffers.
+std::uint64_t geometryBytes(const crowd::Crowd& crowd) {
+    std::uint64_t vertices = 0, indices = 0, textures = 4;
+    for (const model::SkinnedModel* m : crowd.models()) {
+        vertices += m->vertices.size();
+        for (const model::SkinnedModel::Lod& lod : render::lodsOf(*m)) indices += lod.indices.size();
+        textures += textureBytes(*m);
+    }
+    return vertices * (sizeof(gpu::SkinVertex) + sizeof(glm::vec2)) + indices * sizeof(std::uint32_t) +
+           crowd.models().size() * sizeof(gpu::ModelRecord) + textures;
+}
+
+std::uint64_t libraryBytes(const anim::ClipLibrary& library) {
+    return tableBytes(library.models()) + tableBytes(library.joints()) + tableBytes(library.clips()) +
+           tableBytes(library.tracks()) + tableBytes(library.keyTimes()) + tableBytes(library.keyValues()) +
+           tableBytes(library.rootSamples());
+}
+
+// The characters drawn at a mesh level: every one, or the impostor cap's.
+std::uint32_t meshCapacityOf(const RecorderOptions& options, const crowd::Crowd& crowd) {
+    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
+                                                                                                    : 0u;
+}
+
+std::uint64_t methodBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RecorderOptions& options) {
+    // Every character at LOD 0 (a frame's worst case; with a cap, the cap's characters at the largest
+    // LOD 0) and at every LOD (the static method's slots): what render::DrawLists plans.
+    std::uint64_t skinned = 0, fixed = 0, largestLod0 = 0;
+    std::vector<std::vector<model::SkinnedModel::Lod>> lods;
+    for (const model::SkinnedModel* m : crowd.models()) lods.push_back(render::lodsOf(*m));
+    for (const crowd::Character& c : crowd.characters()) {
+        skinned += lods[c.model][0].vertexCount;
+        for (const model::SkinnedModel::Lod& lod : lods[c.model]) fixed += lod.vertexCount;
+    }
+    for (const auto& l : lods) largestLod0 = std::max<std::uint64_t>(largestLod0, l[0].vertexCount);
+    if (const std::uint32_t cap = meshCapacityOf(options, crowd)) skinned = std::min(skinned, largestLod0 * cap);
+    return skin::estimateMethodBytes(options.method, crowd.size(), skinned, fixed,
+                                     skin::maxSkinTargetDimension(context, options.maxTargetDimension));
+}
+
+}  // namespace
+
+std::uint64_t MemoryPlan::total() const {
+    std::uint64_t sum = 0;
+    for (const skin::MemoryItem& item : items) sum += item.bytes;
+    return sum;
+}
+
+MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RecorderOptions& options) {
+    const std::uint64_t n = std::max(1u, crowd.size());
+    const auto buckets = static_cast<std::uint32_t>(crowd.models().size() * LOD_COUNT);
+    MemoryPlan plan;
+    plan.items = {{"geometry pool (vertices, LOD indices, textures)", geometryBytes(crowd)},
+                  {"character records and bone matrices",
+                   crowd.size() * sizeof(gpu::CharacterRecord) + render::planBones(context, crowd).bytes()},
+                  {"clip library (GPU animation)", libraryBytes(crowd.library())},
+                  {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
+                  {"culling lists and draw commands",
+                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityOf(options, crowd))},
+                  {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
+    if (options.cull.impostors) {
+        std::vector<gpu::ModelRecord> records(crowd.models().size());
+        plan.items.push_back(
+            {"impostor atlas", render::planImpostors(crowd.models(), records, options.impostorSettings).bytes()});
+        const std::uint64_t draws = (n + IMPOSTOR_QUADS_PER_DRAW - 1) / IMPOSTOR_QUADS_PER_DRAW;
+        plan.items.push_back({"impostor quad indices and draws",
+                              std::uint64_t{IMPOSTOR_QUADS_PER_DRAW} * 6 * sizeof(std::uint32_t) +
+                                  sizeof(gpu::ImpostorDrawsHeader) + draws * sizeof(gpu::DrawIndexedCommand)});
+    }
+    plan.items.push_back({"skinning method (" + std::string(skin::methodName(options.method)) + ")",
+                          methodBytes(context, crowd, options)});
+    return plan;
+}
+
+}  // namespace frame
