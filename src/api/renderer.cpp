@@ -107,7 +107,7 @@ Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::Re
                       const RendererSettings& settings) {
     auto data = std::make_unique<RendererData>();
     translated([&] {
-        data->context = std::make_unique<gpu::VulkanContext>(checkBorrowedDevice(device));
+        data->context = std::make_shared<gpu::VulkanContext>(checkBorrowedDevice(device));
         checkTargetFormat(device.physicalDevice, settings.target);
         if (options.method == skin::Method::TwoPassDirect && !data->context->fragmentStores)
             throw Error(ErrorCode::Unsupported, "method two-pass-direct needs the feature fragmentStoresAndAtomics");
@@ -119,7 +119,9 @@ Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::Re
                             " of device memory with these settings; " + data->context->description.name + " has " +
                             gpu::formatBytes(available));
         data->settings = settings;
-        data->frame = std::make_unique<frame::CrowdRecorder>(*data->context, crowd, options);
+        frame::RecorderOptions withOwner = options;
+        withOwner.contextOwner = data->context;  // a shared atlas may outlive this renderer
+        data->frame = std::make_unique<frame::CrowdRecorder>(*data->context, crowd, withOwner);
     });
     return Renderer(std::move(data));
 }

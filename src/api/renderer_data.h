@@ -9,7 +9,7 @@
 namespace crowdgpu::detail {
 
 struct RendererData {
-    std::unique_ptr<gpu::VulkanContext> context;  // wraps the host's device; owns nothing of it
+    std::shared_ptr<gpu::VulkanContext> context;  // wraps the host's device; owns nothing of it
     RendererSettings settings;
     std::unique_ptr<frame::CrowdRecorder> frame;
 };

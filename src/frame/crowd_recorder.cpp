@@ -42,6 +42,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       draw_(context, pool_, buffers_, lists_, scene_.setLayout(), options.target),
       method_(createMethod(options.method)),
       impostorSettings_(options.impostorSettings),
+      contextOwner_(options.contextOwner),
       atlas_(options.atlas),
       cull_(options.cull),
       animation_(options.animation),
@@ -215,8 +216,11 @@ void CrowdRecorder::enableImpostors() {
     if (!atlas_) {
         // The bake reads the palette and textures through a scene set: slot 0's (the same in every slot).
         scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), pool_.palette(), pool_.texturedMaterials(), 0.0f));
-        atlas_ = std::make_shared<render::ImpostorAtlas>(context_, pool_, crowd_.models(), scene_.setLayout(),
-                                                         scene_.set(0), impostorSettings_);
+        // The atlas keeps the context it was made with alive: another recorder may share it.
+        atlas_ = std::shared_ptr<const render::ImpostorAtlas>(
+            new render::ImpostorAtlas(context_, pool_, crowd_.models(), scene_.setLayout(), scene_.set(0),
+                                      impostorSettings_),
+            [owner = contextOwner_](const render::ImpostorAtlas* atlas) { delete atlas; });
     } else if (atlas_->models().size() != pool_.modelCount()) {
         throw gpu::Error("impostors: the atlas given was baked for other models");
     }

@@ -56,6 +56,9 @@ struct RecorderOptions {
     render::ImpostorSettings impostorSettings;
     // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
     std::shared_ptr<const render::ImpostorAtlas> atlas;
+    // Kept alive by what may outlive the recorder (its atlas, shared with other recorders): the
+    // owner of the context, when the context is not the caller's for longer.
+    std::shared_ptr<const void> contextOwner;
 };
 
 // Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):
@@ -150,6 +153,7 @@ private:
     render::CharacterDraw draw_;
     std::unique_ptr<skin::SkinningMethod> method_;
     render::ImpostorSettings impostorSettings_;
+    std::shared_ptr<const void> contextOwner_;
     std::shared_ptr<const render::ImpostorAtlas> atlas_;
     std::unique_ptr<render::ImpostorDraw> impostorDraw_;
     render::CullSettings cull_;

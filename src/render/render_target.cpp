@@ -9,11 +9,12 @@
 
 namespace render {
 
-RenderTarget::RenderTarget(const gpu::VulkanContext& context, VkExtent2D extent) : context_(context) {
-    color_ = gpu::createImage2D(context, extent, kColorFormat,
+RenderTarget::RenderTarget(const gpu::VulkanContext& context, VkExtent2D extent, VkFormat color, VkFormat depth)
+    : context_(context) {
+    color_ = gpu::createImage2D(context, extent, color,
                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "scene colour");
     try {
-        depth_ = gpu::createImage2D(context, extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+        depth_ = gpu::createImage2D(context, extent, depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                     "scene depth");
     } catch (...) {
         gpu::destroyImage(context, color_);

@@ -1,5 +1,5 @@
 #pragma once
-// The offscreen image the scene is drawn into (sRGB colour + depth), and its readback.
+// The programs' offscreen image the scene is drawn into (sRGB colour + depth), and its readback.
 #include <vulkan/vulkan.h>
 
 #include "gpu/image.h"
@@ -14,7 +14,9 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 class RenderTarget {
 public:
-    RenderTarget(const gpu::VulkanContext& context, VkExtent2D extent);
+    // 4-byte colour formats only (the readback copies 4 bytes a pixel).
+    RenderTarget(const gpu::VulkanContext& context, VkExtent2D extent, VkFormat color = kColorFormat,
+                 VkFormat depth = kDepthFormat);
     ~RenderTarget();
     RenderTarget(const RenderTarget&) = delete;
     RenderTarget& operator=(const RenderTarget&) = delete;
