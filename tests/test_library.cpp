@@ -1,0 +1,326 @@
+// The library's front door as a host uses it: crowdgpu::Renderer on a device the test creates,
+// recording into the test's own command buffers and its own target in another colour format.
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+
+#include "crowdgpu/renderer.hpp"
+#include "crowdgpu/version.h"
+#include "gpu/one_shot_commands.h"
+#include "gpu/vulkan_error.h"
+#include "render/camera_path.h"
+#include "render/render_target.h"
+#include "render/scene_pass.h"
+#include "support/gpu_test.h"
+#include "support/run_program.h"
+
+namespace {
+
+using test::GpuTest;
+
+// The host's device as the library sees it: the test context's handles and the features it enabled.
+struct HostDevice {
+    VkPhysicalDeviceVulkan11Features vulkan11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan13Features vulkan13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    crowdgpu::Device device;
+
+    explicit HostDevice(const gpu::VulkanContext& context) {
+        vulkan12.pNext = &vulkan11;
+        vulkan13.pNext = &vulkan12;
+        features.pNext = &vulkan13;
+        crowdgpu::enableRequiredFeatures(features, vulkan11, vulkan12, vulkan13);
+        features.features.fragmentStoresAndAtomics = context.fragmentStores;  // two-pass-direct's, when there
+        device = {context.instance, context.physicalDevice, context.device, context.queueFamily, &features};
+    }
+};
+
+// The default scene's crowd of `count` soldiers, as crowd-render builds it.
+crowdgpu::Crowd defaultCrowd(std::uint32_t count) {
+    crowdgpu::GridLayout layout;
+    layout.count = count;
+    return crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+}
+
+// crowd-render's camera for the default scene at `time`, as the host's matrices.
+crowdgpu::FrameView defaultView(const crowdgpu::Crowd& crowd, VkExtent2D size, float time) {
+    float center[3], radius, tallest;
+    crowd.bounds(center, radius, tallest);
+    const render::CrowdShape shape{glm::vec3(center[0], center[1], center[2]), radius, tallest};
+    const float aspect = static_cast<float>(size.width) / static_cast<float>(size.height);
+    const render::Camera camera = render::cameraOnPath(render::CameraPath::Framed, shape, aspect, time);
+    const float eye[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
+    const float target[3] = {camera.target.x, camera.target.y, camera.target.z};
+    return crowdgpu::lookAt(eye, target, camera.verticalFov, camera.nearPlane, camera.farPlane, size, time);
+}
+
+// One frame the way a host draws it: the crowd planned, compute and shadows recorded, then the
+// host's own colour pass with the ground and the characters.
+void recordFrame(crowdgpu::Renderer& renderer, VkCommandBuffer cmd, std::uint32_t slot,
+                 const crowdgpu::FrameView& view, render::RenderTarget& target) {
+    renderer.recordCompute(cmd, slot, view);
+    renderer.recordShadows(cmd, slot);
+    const float sky[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+    target.beginRendering(cmd, sky);
+    renderer.recordGround(cmd, slot);
+    renderer.recordCharacters(cmd, slot);
+    target.endRendering(cmd);
+}
+
+void runSetup(const gpu::VulkanContext& context, crowdgpu::Renderer& renderer) {
+    gpu::runOneShotNow(context, [&](VkCommandBuffer cmd) { renderer.recordSetup(cmd); });
+    renderer.setupCompleted();
+}
+
+render::Rgba8Image bgraToRgba(render::Rgba8Image image) {
+    for (std::size_t i = 0; i < image.pixels.size(); i += 4) std::swap(image.pixels[i], image.pixels[i + 2]);
+    return image;
+}
+
+render::Rgba8Image readPng(const std::string& path) {
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels, 4);
+    if (!data) return {};
+    render::Rgba8Image image{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height),
+                             std::vector<std::uint8_t>(data, data + std::size_t(width) * height * 4)};
+    stbi_image_free(data);
+    return image;
+}
+
+const char* methodFlag(crowdgpu::Method method) {
+    switch (method) {
+        case crowdgpu::Method::TwoPass: return "two-pass";
+        case crowdgpu::Method::VertexShader: return "vs";
+        case crowdgpu::Method::Compute: return "compute";
+        default: return "";
+    }
+}
+
+}  // namespace
+
+TEST(Library, VersionMacroAndFunctionAgree) {
+    EXPECT_EQ(crowdgpu_version(), static_cast<unsigned>(CROWDGPU_VERSION));
+    EXPECT_STREQ(crowdgpu_version_string(), "1.0.0");
+}
+
+// The embedded crowd in the host's B8G8R8A8_SRGB target is crowd-render's picture of the same crowd,
+// camera and time, once the channels are swapped back.
+TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
+    const VkExtent2D size{256, 144};
+    for (const crowdgpu::Method method :
+         {crowdgpu::Method::TwoPass, crowdgpu::Method::VertexShader, crowdgpu::Method::Compute}) {
+        const std::string png = test::artifactPath(std::string("library-crowd-render-") + methodFlag(method) + ".png");
+        const test::ProgramResult r =
+            test::runProgram(CROWD_RENDER_BINARY, std::string("--count 64 --method ") + methodFlag(method) +
+                                                      " --frames 1 --size 256x144 --validation --out " + png);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const render::Rgba8Image program = readPng(png);
+        ASSERT_EQ(program.width, size.width);
+
+        crowdgpu::Crowd crowd = defaultCrowd(64);
+        HostDevice host(*context);
+        crowdgpu::RendererSettings settings;
+        settings.target = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
+        settings.method = method;
+        crowdgpu::Renderer renderer(host.device, crowd, settings);
+        runSetup(*context, renderer);
+        render::RenderTarget target(*context, size, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT);
+        crowd.advanceTo(0.0f);
+        gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+            recordFrame(renderer, cmd, 0, defaultView(crowd, size, 0.0f), target);
+        });
+        const render::Rgba8Image embedded = bgraToRgba(target.readback());
+        EXPECT_GE(test::fractionOfMatchingPixels(embedded, program, 1), 0.999) << methodFlag(method);
+        std::filesystem::remove(png);
+    }
+}
+
+// Two renderers with two crowds in one host pass, two frames in flight, waiting only on each slot's
+// own fence: validation silent, and the last frame equals each crowd drawn alone where it stands.
+TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
+    const VkExtent2D size{256, 144};
+    crowdgpu::GridLayout layout;
+    layout.count = 16;
+    crowdgpu::Crowd soldiers = crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+    std::vector<crowdgpu::Character> horses(4);
+    for (std::uint32_t i = 0; i < horses.size(); ++i) horses[i].position[0] = 8.0f + 3.0f * static_cast<float>(i);
+    crowdgpu::Crowd herd({crowdgpu::Model::horse(1)}, horses);
+    HostDevice host(*context);
+    crowdgpu::RendererSettings settings;
+    settings.shadows = false;  // each renderer's ground would see only its own shadow map
+    settings.method = crowdgpu::Method::Compute;
+    crowdgpu::Renderer a(host.device, soldiers, settings), b(host.device, herd, settings);
+    runSetup(*context, a);
+    runSetup(*context, b);
+    render::RenderTarget target(*context, size);
+    const float eye[3] = {4.0f, 9.0f, 24.0f}, at[3] = {4.0f, 0.5f, 0.0f};
+
+    std::vector<VkCommandBuffer> cmds(2);
+    std::vector<VkFence> fences(2);
+    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocate.commandPool = context->commandPool;
+    allocate.commandBufferCount = 2;
+    ASSERT_EQ(vkAllocateCommandBuffers(context->device, &allocate, cmds.data()), VK_SUCCESS);
+    for (VkFence& fence : fences) {
+        VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        info.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+        ASSERT_EQ(vkCreateFence(context->device, &info, nullptr, &fence), VK_SUCCESS);
+    }
+    const float lastTime = 5.0f / 60.0f;
+    for (std::uint32_t frame = 0; frame < 6; ++frame) {
+        const std::uint32_t slot = frame % 2;
+        const float time = static_cast<float>(frame) / 60.0f;
+        ASSERT_EQ(vkWaitForFences(context->device, 1, &fences[slot], VK_TRUE, UINT64_MAX), VK_SUCCESS);
+        vkResetFences(context->device, 1, &fences[slot]);
+        soldiers.advanceTo(time);
+        herd.advanceTo(time);
+        const crowdgpu::FrameView view = crowdgpu::lookAt(eye, at, 0.8f, 0.1f, 200.0f, size, time);
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        vkBeginCommandBuffer(cmds[slot], &begin);
+        a.recordCompute(cmds[slot], slot, view);
+        b.recordCompute(cmds[slot], slot, view);
+        a.recordShadows(cmds[slot], slot);
+        b.recordShadows(cmds[slot], slot);
+        const float sky[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+        target.beginRendering(cmds[slot], sky);
+        a.recordGround(cmds[slot], slot);
+        a.recordCharacters(cmds[slot], slot);
+        b.recordCharacters(cmds[slot], slot);
+        target.endRendering(cmds[slot]);
+        vkEndCommandBuffer(cmds[slot]);
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.commandBufferCount = 1;
+        submit.pCommandBuffers = &cmds[slot];
+        ASSERT_EQ(vkQueueSubmit(context->queue, 1, &submit, fences[slot]), VK_SUCCESS);
+    }
+    vkWaitForFences(context->device, 2, fences.data(), VK_TRUE, UINT64_MAX);
+    const render::Rgba8Image both = target.readback();
+    EXPECT_GT(a.counts(1).characters[0] + a.counts(1).characters[1] + a.counts(1).characters[2], 0u);
+    EXPECT_GT(b.counts(1).characters[0] + b.counts(1).characters[1] + b.counts(1).characters[2], 0u);
+
+    // Each crowd alone at the same time: where it differs from the bare ground, the pair's frame is it.
+    auto alone = [&](crowdgpu::Renderer* first, crowdgpu::Renderer* second) {
+        gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+            const crowdgpu::FrameView view = crowdgpu::lookAt(eye, at, 0.8f, 0.1f, 200.0f, size, lastTime);
+            a.recordCompute(cmd, 0, view);
+            b.recordCompute(cmd, 0, view);
+            a.recordShadows(cmd, 0);
+            b.recordShadows(cmd, 0);
+            const float sky[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+            target.beginRendering(cmd, sky);
+            a.recordGround(cmd, 0);
+            if (first) first->recordCharacters(cmd, 0);
+            if (second) second->recordCharacters(cmd, 0);
+            target.endRendering(cmd);
+        });
+        return target.readback();
+    };
+    const render::Rgba8Image onlyA = alone(&a, nullptr), onlyB = alone(&b, nullptr), ground = alone(nullptr, nullptr);
+    std::size_t pixelsA = 0, pixelsB = 0, matching = 0, covered = 0;
+    for (std::size_t i = 0; i < both.pixels.size(); i += 4) {
+        const bool inA = std::memcmp(&onlyA.pixels[i], &ground.pixels[i], 3) != 0;
+        const bool inB = std::memcmp(&onlyB.pixels[i], &ground.pixels[i], 3) != 0;
+        pixelsA += inA, pixelsB += inB;
+        if (inA == inB) continue;  // neither, or both overlapping (depth decides)
+        ++covered;
+        matching += std::memcmp(&both.pixels[i], inA ? &onlyA.pixels[i] : &onlyB.pixels[i], 3) == 0;
+    }
+    EXPECT_GT(pixelsA, 100u);
+    EXPECT_GT(pixelsB, 100u);
+    EXPECT_GE(static_cast<double>(matching), 0.999 * static_cast<double>(covered));
+    for (VkFence fence : fences) vkDestroyFence(context->device, fence, nullptr);
+    vkFreeCommandBuffers(context->device, context->commandPool, 2, cmds.data());
+}
+
+// What memoryNeeded promises before a renderer exists is what the renderer then allocates, within 1 %,
+// for every method, with and without impostors.
+TEST_F(GpuTest, MemoryNeededMatchesWhatTheRendererAllocates) {
+    crowdgpu::Crowd crowd = defaultCrowd(300);
+    HostDevice host(*context);
+    for (const bool impostors : {false, true})
+        for (const crowdgpu::Method method :
+             {crowdgpu::Method::TwoPass, crowdgpu::Method::TwoPassDirect, crowdgpu::Method::VertexShader,
+              crowdgpu::Method::VertexShaderInstanced, crowdgpu::Method::Compute, crowdgpu::Method::Static}) {
+            if (method == crowdgpu::Method::TwoPassDirect && !context->fragmentStores) continue;
+            crowdgpu::RendererSettings settings;
+            settings.method = method;
+            settings.impostors = impostors;
+            settings.meshCapacity = 100;
+            const std::uint64_t needed = crowdgpu::memoryNeeded(context->physicalDevice, crowd, settings);
+            crowdgpu::Renderer renderer(host.device, crowd, settings);
+            std::uint64_t allocated = 0;
+            for (const crowdgpu::MemoryItem& item : renderer.memory()) allocated += item.bytes;
+            EXPECT_NEAR(static_cast<double>(needed), static_cast<double>(allocated), 0.01 * static_cast<double>(allocated))
+                << "method " << static_cast<int>(method) << ", impostors " << impostors;
+        }
+}
+
+// Bad use: one clear error with its code, and nothing made.
+TEST_F(GpuTest, LibraryRefusesBadUseWithOneClearError) {
+    crowdgpu::Crowd crowd = defaultCrowd(16);
+    auto expectError = [](crowdgpu::ErrorCode code, const std::string& words, auto&& call) {
+        try {
+            call();
+            ADD_FAILURE() << "no error for: " << words;
+        } catch (const crowdgpu::Error& error) {
+            EXPECT_EQ(error.code(), code) << error.what();
+            EXPECT_NE(std::string(error.what()).find(words), std::string::npos) << error.what();
+            EXPECT_EQ(std::string(error.what()).find("--"), std::string::npos) << "CLI vocabulary: " << error.what();
+        }
+    };
+    {  // a device created without a feature the library needs
+        HostDevice host(*context);
+        host.vulkan12.drawIndirectCount = VK_FALSE;
+        expectError(crowdgpu::ErrorCode::Unsupported, "drawIndirectCount",
+                    [&] { crowdgpu::Renderer(host.device, crowd, {}); });
+        host.device.enabledFeatures = nullptr;
+        expectError(crowdgpu::ErrorCode::InvalidArgument, "enabledFeatures",
+                    [&] { crowdgpu::Renderer(host.device, crowd, {}); });
+    }
+    HostDevice host(*context);
+    {  // formats the device cannot render to
+        crowdgpu::RendererSettings settings;
+        settings.target.color = VK_FORMAT_D32_SFLOAT;
+        expectError(crowdgpu::ErrorCode::Unsupported, "colour format", [&] { crowdgpu::Renderer(host.device, crowd, settings); });
+        settings.target = {};
+        settings.target.depth = VK_FORMAT_R8G8B8A8_UNORM;
+        expectError(crowdgpu::ErrorCode::Unsupported, "depth format", [&] { crowdgpu::Renderer(host.device, crowd, settings); });
+        settings.target = {};
+        settings.lodThresholds[0] = 10.0f;
+        expectError(crowdgpu::ErrorCode::InvalidArgument, "LOD thresholds",
+                    [&] { crowdgpu::Renderer(host.device, crowd, settings); });
+    }
+    {  // record calls out of order, before setup, in a slot that does not exist, with a broken view
+        crowdgpu::Renderer renderer(host.device, crowd, {});
+        const crowdgpu::FrameView view = defaultView(crowd, {64, 64}, 0.0f);
+        gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+            expectError(crowdgpu::ErrorCode::WrongOrder, "recordSetup", [&] { renderer.recordCompute(cmd, 0, view); });
+        });
+        runSetup(*context, renderer);
+        gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+            expectError(crowdgpu::ErrorCode::WrongOrder, "recordCompute", [&] { renderer.recordCharacters(cmd, 0); });
+            expectError(crowdgpu::ErrorCode::WrongOrder, "recordCompute", [&] { renderer.recordShadows(cmd, 1); });
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "slot 2", [&] { renderer.recordCompute(cmd, 2, view); });
+            crowdgpu::FrameView broken = view;
+            broken.projection[0] = std::nanf("");
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "perspective", [&] { renderer.recordCompute(cmd, 0, broken); });
+            renderer.recordCompute(cmd, 0, view);
+            expectError(crowdgpu::ErrorCode::WrongOrder, "recordShadows", [&] { renderer.recordCharacters(cmd, 0); });
+        });
+    }
+    {  // a crowd larger than the device's memory, refused before anything is allocated
+        crowdgpu::GridLayout layout;
+        layout.count = 2'000'000;
+        crowdgpu::Crowd huge = crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+        crowdgpu::RendererSettings settings;
+        settings.method = crowdgpu::Method::Static;  // every character at every LOD: far past any heap here
+        ASSERT_GT(crowdgpu::memoryNeeded(context->physicalDevice, huge, settings), context->deviceLocalBytes());
+        expectError(crowdgpu::ErrorCode::OutOfDeviceMemory, "2000000 characters",
+                    [&] { crowdgpu::Renderer(host.device, huge, settings); });
+    }
+}
