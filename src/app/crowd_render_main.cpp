@@ -1,6 +1,7 @@
 // crowd-render: renders a skinned crowd headless for N frames, writes a PNG of the last frame and
 // prints (and optionally writes as JSON) the timings. Without a GPU it also lists a model's clips
 // (--list-clips) and writes one character's pose as OBJ (--export-pose).
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,8 @@
 #include "io/standard_output.h"
 #include "model/obj_export.h"
 #include "app/crowd_renderer.h"
+#include "frame/memory_plan.h"
+#include "gpu/buffer.h"
 #include "render/png_writer.h"
 
 namespace {
@@ -136,6 +139,14 @@ int run(const app::RenderOptions& options) {
     summary.memoryPerCharacter = renderer.memoryPerCharacter();
     if (renderer.impostorAtlas()) summary.atlasBakeMs = renderer.impostorAtlas()->bakeMs();
     app::printSummary(summary);
+    // The library's promise: what memoryNeeded plans before anything exists is what was allocated.
+    std::uint64_t allocated = 0;
+    for (const skin::MemoryItem& item : renderer.memory())
+        allocated += item.what == "render target" ? 0 : item.bytes;  // the host's, not the library's
+    const std::uint64_t planned = frame::planMemory(context, crowd, rendererOptions).total();
+    std::printf("  library memory: %llu bytes planned, %llu allocated (%+.2f %%)\n",
+                static_cast<unsigned long long>(planned), static_cast<unsigned long long>(allocated),
+                100.0 * (static_cast<double>(planned) / static_cast<double>(std::max<std::uint64_t>(allocated, 1)) - 1.0));
     std::printf("  wrote %s\n", options.out.c_str());
     if (!options.json.empty()) app::writeJson(options.json, summary);
     if (context.validationMessages() > 0) {
