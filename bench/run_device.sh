@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the benchmark on a lent GPU machine (see README, "Benchmarks"). Expects the Vulkan loader
+# Runs the benchmark on a lent GPU machine (see docs/benchmarks.md). Expects the Vulkan loader
 # packages in .gl/ and prebuilt crowd-bench / crowd-render in .devbin/ (both carried with the call),
 # writes everything under $OUT. Usage: bench/run_device.sh [extra crowd-bench flags]
 set -uo pipefail

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Turns a crowd-bench CSV into the Markdown tables the README shows: fps per method and crowd size
+"""Turns a crowd-bench CSV into the Markdown tables docs/results.md shows: fps per method and crowd size
 (the paper's Table 1 layout), each method's frame time relative to `static`, and the passes at one size.
 Usage: bench/table.py RESULTS.csv [CHARACTERS_FOR_PASSES]"""
 import csv

@@ -270,7 +270,7 @@ TEST(CrowdApi, MoveToArrivesAndStops) {
 TEST(CrowdApi, TheReadmeExampleRunsAsWritten) {
     const model::SkinnedModel& soldier = ::soldier();
     const model::SkinnedModel& horse = ::horse();
-    // As in README.md, "The C++ API" (without the renderer).
+    // As in docs/living-crowd.md, "The C++ API" (without the renderer).
     const std::vector<const model::SkinnedModel*> models = {&soldier, &horse};
     crowd::LayoutOptions layout;
     layout.count = 1000;

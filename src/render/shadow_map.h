@@ -2,7 +2,7 @@
 // The directional light's shadow map: a depth image the characters are drawn into from the light
 // (consuming the same skinned vertices as the colour pass), sampled with depth comparison by the
 // character and ground shading. One map covers the camera's view out to a shadow distance; beyond it
-// nothing is shadowed (a single cascade, see the README).
+// nothing is shadowed (a single cascade, see docs/gpu-driven-frame.md, "Shadows").
 #include <cstdint>
 
 #include <glm/glm.hpp>
