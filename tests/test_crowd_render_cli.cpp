@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -196,6 +197,37 @@ TEST(CrowdRenderCli, OutputCutShortByAFullDiskLeavesNoFileAndKeepsTheOldOne) {
         EXPECT_EQ(entry.path().filename().string().find("crowd-cli-" + std::to_string(::getpid()) + "-full-disk"),
                   std::string::npos)
             << entry.path();
+}
+
+TEST(CrowdRenderCli, AFileUnderDevShmCutShortKeepsTheOldOne) {
+    // /dev/shm holds regular files: replaced whole or not at all, like any other folder's.
+    if (::access("/dev/shm", W_OK) != 0) GTEST_SKIP() << "no writable /dev/shm";
+    const std::string json = "/dev/shm/crowd-cli-" + std::to_string(::getpid()) + "-cut-short.json";
+    std::ofstream(json) << "the previous run's JSON";
+    const test::ProgramResult r = test::runProgram(test::withFileSizeLimit(kRender, 2),  // room for the summary
+                                                   "--count 4 --frames 1 --size 64x64 --out /dev/null --json " + json);
+    expectWriteFailure(r, json);
+    EXPECT_EQ(r.err, "crowd-render: cannot write " + json + ": File too large\n");
+    EXPECT_EQ(readText(json), "the previous run's JSON");
+    std::filesystem::remove(json);
+    for (const auto& entry : std::filesystem::directory_iterator("/dev/shm"))
+        EXPECT_EQ(entry.path().filename().string().find("crowd-cli-" + std::to_string(::getpid())), std::string::npos)
+            << entry.path();
+}
+
+TEST(CrowdRenderCli, JsonToStandardOutputFollowsTheSummaryWhole) {
+    // Standard output is a file here (runProgram redirects it): the JSON is appended after the summary,
+    // not written over it from offset 0, nor overwritten by it at exit.
+    for (const char* path : {"/dev/stdout", "/proc/self/fd/1"}) {
+        const test::ProgramResult r =
+            test::runProgram(kRender, std::string("--count 4 --frames 1 --size 64x64 --out /dev/null --json ") + path);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const std::size_t json = r.out.find("\n{");
+        ASSERT_NE(json, std::string::npos) << r.out;
+        EXPECT_NE(r.out.substr(0, json).find("wrote /dev/null"), std::string::npos) << r.out;
+        const nlohmann::json j = nlohmann::json::parse(r.out.substr(json + 1));
+        EXPECT_EQ(j["characters"], 4) << path;
+    }
 }
 
 TEST(CrowdRenderCli, ExportPoseCutShortLeavesNoFile) {

@@ -16,6 +16,7 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
+#include "io/file_size_signal.h"
 #include "io/standard_output.h"
 
 #ifndef CROWD_COMMIT
@@ -308,6 +309,7 @@ int run(const BenchOptions& options, const std::string& command) {
 
 int main(int argc, char** argv) {
     io::failOnUnwrittenStandardOutput("crowd-bench");
+    io::failWritesPastTheFileSizeLimit();
     try {
         const std::vector<std::string> args(argv + 1, argv + argc);
         const BenchOptions options = parseBenchOptions(args);
