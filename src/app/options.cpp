@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/number_text.h"
 #include "app/scene_presets.h"
 
 #include "gpu/vulkan_error.h"
@@ -98,7 +99,7 @@ float parseNumber(const std::string& flag, const std::string& text, float min, f
     if (text.empty() || error != std::errc() || ptr != end || !std::isfinite(value))
         throw gpu::Error(flag + ": '" + text + "' is not a number");
     if (value < min || value > max)
-        throw gpu::Error(flag + ": " + text + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+        throw gpu::Error(flag + ": " + text + " is outside " + formatNumber(min) + ".." + formatNumber(max));
     return value;
 }
 
