@@ -282,3 +282,16 @@ TEST(CrowdRenderCli, StandardOutputThatCannotBeWrittenFailsTheRun) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
 }
+
+TEST(CrowdRenderCli, LateStartsAreBoundedInOneLine) {
+    // A milling crowd replans from 0 s to reach --start: 64 characters at 1e6 s planned for minutes.
+    expectOneLineError("--scene mill --count 64 --start 1e6 --frames 1 --out /dev/null", "--start: 1e6 is outside 0..3600");
+    expectOneLineError("--scene mill --count 100000 --start 1000 --frames 1 --out /dev/null",
+                       "--start: 1000 s is too late for 100000 mill characters, which replan from 0 s to get there "
+                       "(at most 100 s for --count 100000)");
+    expectOneLineError("--behaviour march --count 10000 --start 3600", "at most 1000 s for --count 10000");
+    // In place, nothing is replanned: the whole hour is open.
+    const test::ProgramResult r =
+        test::runProgram(kRender, "--count 4 --start 3600 --frames 2 --size 32x32 --out /dev/null", "", 60);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}

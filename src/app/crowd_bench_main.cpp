@@ -13,6 +13,7 @@
 #include "app/options.h"
 #include "app/palette_bench.h"
 #include "app/scene_presets.h"
+#include "app/start_time.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
@@ -149,7 +150,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             if (flag == "--mesh-capacity") o.scene.meshCapacity = parsed.meshCapacity;
             impostorsGiven = true;
         } else if (flag == "--start") {
-            o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, 1e6f);
+            o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, app::kMaxStartSeconds);
             startGiven = true;
         } else if (flag == "--lod") {
             o.scene.cull.lod = app::parseRenderOptions({"--lod", next()}).cull.lod;
@@ -176,6 +177,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     }
     (void)sceneGiven;
     o.countsGiven = countsGiven;
+    for (const std::uint32_t count : o.counts) app::checkStartTime(o.scene.startSeconds, count, o.scene.scene.behaviour);
     if (o.palette && !countsGiven) o.counts = {1024, 4096, 16384, 65536, 262144, 1000000};
     if (o.palette && !o.framesGiven) o.frames = 10, o.warmup = 3;
     skin::Method method;
