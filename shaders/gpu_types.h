@@ -149,6 +149,11 @@ struct ImpostorDrawsHeader {
 #define MAX_ANIMATION_JOINTS 256
 // Steps of the quadrature that integrates a character's path while it turns or crossfades.
 #define MOTION_QUADRATURE_STEPS 16
+// A skinned normal shorter than this (squared) is taken as collapsed: its bones map it to (almost)
+// nothing, as a zero scale key or a zero inverse bind matrix does to hide a part. Normalizing it
+// would give NaN (or inf from a float32 square that underflowed), so the vertex keeps its bind-pose
+// normal instead; CPU reference and shaders share the threshold.
+#define COLLAPSED_NORMAL_LENGTH2 1e-30
 
 // One model's skeleton and clips in the flattened library.
 struct AnimationModel {

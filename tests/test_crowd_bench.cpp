@@ -112,3 +112,11 @@ TEST(CrowdBench, FailedWritesExitOneNamingTheFile) {
         EXPECT_EQ(lastLine.rfind("crowd-bench: cannot write /dev/full: ", 0), 0u) << output << ":\n" << r.err;
     }
 }
+
+TEST(CrowdBench, LateStartsOfLivingCrowdsAreBoundedInOneLine) {
+    const test::ProgramResult r =
+        test::runProgram(CROWD_BENCH_BINARY, "--behaviour mill --counts 16,100000 --start 1000 --methods compute", "", 60);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err, "crowd-bench: --start: 1000 s is too late for 100000 mill characters, which replan from 0 s to get "
+                     "there (at most 100 s for --count 100000)\n");
+}

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -198,6 +199,37 @@ TEST(CrowdRenderCli, OutputCutShortByAFullDiskLeavesNoFileAndKeepsTheOldOne) {
             << entry.path();
 }
 
+TEST(CrowdRenderCli, AFileUnderDevShmCutShortKeepsTheOldOne) {
+    // /dev/shm holds regular files: replaced whole or not at all, like any other folder's.
+    if (::access("/dev/shm", W_OK) != 0) GTEST_SKIP() << "no writable /dev/shm";
+    const std::string json = "/dev/shm/crowd-cli-" + std::to_string(::getpid()) + "-cut-short.json";
+    std::ofstream(json) << "the previous run's JSON";
+    const test::ProgramResult r = test::runProgram(test::withFileSizeLimit(kRender, 2),  // room for the summary
+                                                   "--count 4 --frames 1 --size 64x64 --out /dev/null --json " + json);
+    expectWriteFailure(r, json);
+    EXPECT_EQ(r.err, "crowd-render: cannot write " + json + ": File too large\n");
+    EXPECT_EQ(readText(json), "the previous run's JSON");
+    std::filesystem::remove(json);
+    for (const auto& entry : std::filesystem::directory_iterator("/dev/shm"))
+        EXPECT_EQ(entry.path().filename().string().find("crowd-cli-" + std::to_string(::getpid())), std::string::npos)
+            << entry.path();
+}
+
+TEST(CrowdRenderCli, JsonToStandardOutputFollowsTheSummaryWhole) {
+    // Standard output is a file here (runProgram redirects it): the JSON is appended after the summary,
+    // not written over it from offset 0, nor overwritten by it at exit.
+    for (const char* path : {"/dev/stdout", "/proc/self/fd/1"}) {
+        const test::ProgramResult r =
+            test::runProgram(kRender, std::string("--count 4 --frames 1 --size 64x64 --out /dev/null --json ") + path);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const std::size_t json = r.out.find("\n{");
+        ASSERT_NE(json, std::string::npos) << r.out;
+        EXPECT_NE(r.out.substr(0, json).find("wrote /dev/null"), std::string::npos) << r.out;
+        const nlohmann::json j = nlohmann::json::parse(r.out.substr(json + 1));
+        EXPECT_EQ(j["characters"], 4) << path;
+    }
+}
+
 TEST(CrowdRenderCli, ExportPoseCutShortLeavesNoFile) {
     const std::string obj = tempFile("full-disk.obj");
     expectWriteFailure(test::runProgram(test::withFileSizeLimit(kRender, 1), "--export-pose " + obj), obj);
@@ -249,4 +281,17 @@ TEST(CrowdRenderCli, StandardOutputThatCannotBeWrittenFailsTheRun) {
         EXPECT_EQ(r.err.rfind("crowd-render: cannot write standard output: ", 0), 0u) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
+}
+
+TEST(CrowdRenderCli, LateStartsAreBoundedInOneLine) {
+    // A milling crowd replans from 0 s to reach --start: 64 characters at 1e6 s planned for minutes.
+    expectOneLineError("--scene mill --count 64 --start 1e6 --frames 1 --out /dev/null", "--start: 1e6 is outside 0..3600");
+    expectOneLineError("--scene mill --count 100000 --start 1000 --frames 1 --out /dev/null",
+                       "--start: 1000 s is too late for 100000 mill characters, which replan from 0 s to get there "
+                       "(at most 100 s for --count 100000)");
+    expectOneLineError("--behaviour march --count 10000 --start 3600", "at most 1000 s for --count 10000");
+    // In place, nothing is replanned: the whole hour is open.
+    const test::ProgramResult r =
+        test::runProgram(kRender, "--count 4 --start 3600 --frames 2 --size 32x32 --out /dev/null", "", 60);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
 }

@@ -2,6 +2,8 @@
 // named, an existing file replaced only by a complete one.
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
+#include <thread>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -79,6 +81,63 @@ TEST_F(OutputFile, ReplacesTheFileASymbolicLinkNamesAndKeepsTheLink) {
     io::writeFile(dir / "link.txt", std::string_view("new"));
     EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.txt"));
     EXPECT_EQ(read(dir / "target.txt"), "new");
+}
+
+TEST_F(OutputFile, ADanglingLinkIsWrittenThroughToTheFileItNames) {
+    // As the shell's `>` does: the link's target is created and the link stays a link.
+    std::filesystem::create_directories(dir / "results");
+    std::filesystem::create_symlink("results/out.png", dir / "link.png");
+    io::checkWritable(dir / "link.png");
+    io::writeFile(dir / "link.png", std::string_view("new"));
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.png"));
+    EXPECT_EQ(read(dir / "results" / "out.png"), "new");
+    EXPECT_EQ(filesInDir(), (std::vector<std::string>{"link.png", "results"}));
+}
+
+TEST_F(OutputFile, ADanglingLinkIntoAMissingFolderIsAnErrorNamingTheLink) {
+    std::filesystem::create_symlink("no-such-folder/out.png", dir / "link.png");
+    const std::filesystem::path link = dir / "link.png";
+    EXPECT_EQ(errorOf([&] { io::writeFile(link, std::string_view("x")); }),
+              "cannot write " + link.string() + ": No such file or directory");
+    EXPECT_TRUE(std::filesystem::is_symlink(link));
+}
+
+TEST_F(OutputFile, ALoopOfLinksIsAnErrorNamingThePath) {
+    std::filesystem::create_symlink("b", dir / "a");
+    std::filesystem::create_symlink("a", dir / "b");
+    EXPECT_EQ(errorOf([&] { io::writeFile(dir / "a", std::string_view("x")); }),
+              "cannot write " + (dir / "a").string() + ": Too many levels of symbolic links");
+    EXPECT_EQ(filesInDir(), (std::vector<std::string>{"a", "b"}));
+}
+
+TEST_F(OutputFile, AFileUnderDevIsJudgedByWhatItIsNotByItsName) {
+    // /dev/shm holds regular files: a new one is created, an existing one replaced whole (a new inode),
+    // as anywhere else; only devices and FIFOs are written in place.
+    const std::filesystem::path shm = "/dev/shm";
+    if (::access(shm.c_str(), W_OK) != 0) GTEST_SKIP() << "no writable /dev/shm";
+    const std::filesystem::path file = shm / ("crowd-output-file-" + std::to_string(::getpid()) + ".txt");
+    io::checkWritable(file);
+    io::writeFile(file, std::string_view("first"));
+    EXPECT_EQ(read(file), "first");
+    struct stat before {}, after {};
+    ASSERT_EQ(::stat(file.c_str(), &before), 0);
+    io::writeFile(file, std::string_view("second"));
+    ASSERT_EQ(::stat(file.c_str(), &after), 0);
+    EXPECT_EQ(read(file), "second");
+    EXPECT_NE(before.st_ino, after.st_ino) << "rewritten in place instead of replaced";
+    std::filesystem::remove(file);
+}
+
+TEST_F(OutputFile, AFifoIsWrittenInPlace) {
+    const std::filesystem::path fifo = dir / "pipe";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    io::checkWritable(fifo);  // returns without waiting for a reader
+    std::string received;
+    std::thread reader([&] { received = read(fifo); });
+    io::writeFile(fifo, std::string_view("through the pipe"));
+    reader.join();
+    EXPECT_EQ(received, "through the pipe");
+    EXPECT_EQ(filesInDir(), std::vector<std::string>{"pipe"});
 }
 
 TEST_F(OutputFile, AFullDeviceIsAnErrorNamingIt) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "anim/local_to_model.h"
+#include "app/memory_shortfall.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
 #include "crowd/pose_bounds.h"
@@ -167,6 +168,13 @@ std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, 
     return crowd::gridLayout(models, layout);
 }
 
+namespace {
+
+// The render target's colour and depth (8 bytes a pixel).
+std::uint64_t imageBytes(VkExtent2D size) { return static_cast<std::uint64_t>(size.width) * size.height * 8; }
+
+}  // namespace
+
 std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
                                  VkExtent2D size, std::uint32_t meshCapacity) {
     // Every character at LOD 0 (a frame's worst case; with a cap, the cap's characters at the largest
@@ -195,7 +203,7 @@ std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd:
                                     meshCapacity) + atlas +
         skin::estimateMethodBytes(method, characters, skinnedCapacity, fixedCapacity,
                                   skin::maxSkinTargetDimension(context, 0)) +
-        static_cast<std::uint64_t>(size.width) * size.height * 8;
+        imageBytes(size);
     return needed;
 }
 
@@ -204,9 +212,8 @@ void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd
     const std::uint64_t needed = estimateCrowdBytes(context, crowd, method, size, meshCapacity);
     const std::uint64_t available = context.deviceLocalBytes();
     if (needed > available)
-        throw gpu::Error("--count " + std::to_string(crowd.size()) + ": " + skin::methodName(method) + " needs about " +
-                         gpu::formatBytes(needed) + " of device memory; " + context.description.name + " has " +
-                         gpu::formatBytes(available));
+        throw gpu::Error(describeShortfall({crowd.size(), size, skin::methodName(method), needed, imageBytes(size),
+                                            available, context.description.name}));
 }
 
 render::CrowdShape crowdShape(const crowd::Crowd& crowd) {

@@ -13,9 +13,11 @@
 #include "app/options.h"
 #include "app/palette_bench.h"
 #include "app/scene_presets.h"
+#include "app/start_time.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
+#include "io/file_size_signal.h"
 #include "io/standard_output.h"
 
 #ifndef CROWD_COMMIT
@@ -148,7 +150,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
             if (flag == "--mesh-capacity") o.scene.meshCapacity = parsed.meshCapacity;
             impostorsGiven = true;
         } else if (flag == "--start") {
-            o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, 1e6f);
+            o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, app::kMaxStartSeconds);
             startGiven = true;
         } else if (flag == "--lod") {
             o.scene.cull.lod = app::parseRenderOptions({"--lod", next()}).cull.lod;
@@ -175,6 +177,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     }
     (void)sceneGiven;
     o.countsGiven = countsGiven;
+    for (const std::uint32_t count : o.counts) app::checkStartTime(o.scene.startSeconds, count, o.scene.scene.behaviour);
     if (o.palette && !countsGiven) o.counts = {1024, 4096, 16384, 65536, 262144, 1000000};
     if (o.palette && !o.framesGiven) o.frames = 10, o.warmup = 3;
     skin::Method method;
@@ -308,6 +311,7 @@ int run(const BenchOptions& options, const std::string& command) {
 
 int main(int argc, char** argv) {
     io::failOnUnwrittenStandardOutput("crowd-bench");
+    io::failWritesPastTheFileSizeLimit();
     try {
         const std::vector<std::string> args(argv + 1, argv + argc);
         const BenchOptions options = parseBenchOptions(args);

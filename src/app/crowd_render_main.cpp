@@ -15,6 +15,7 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
+#include "io/file_size_signal.h"
 #include "io/standard_output.h"
 #include "model/obj_export.h"
 #include "app/crowd_renderer.h"
@@ -161,6 +162,7 @@ int run(const app::RenderOptions& options) {
 
 int main(int argc, char** argv) {
     io::failOnUnwrittenStandardOutput("crowd-render");
+    io::failWritesPastTheFileSizeLimit();
     try {
         PoseFlags pose;
         const app::RenderOptions options = app::parseRenderOptions(

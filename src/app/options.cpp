@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/number_text.h"
 #include "app/scene_presets.h"
+#include "app/start_time.h"
 
 #include "gpu/vulkan_error.h"
 
@@ -45,7 +47,8 @@ usage: crowd-render [options]
                           drawn as impostors; sizes the skinned-vertex buffers (default 65536)
   --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
   --start SECONDS         scene time of the first frame: where on the camera path (and in the clips)
-                          the run begins (default 0)
+                          the run begins (default 0; at most 3600, and for march and mill at most
+                          1e7 / --count: they replan every character from 0 s)
   --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
                           fraction of it, 0..0.5 (default 0.1)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
@@ -98,7 +101,7 @@ float parseNumber(const std::string& flag, const std::string& text, float min, f
     if (text.empty() || error != std::errc() || ptr != end || !std::isfinite(value))
         throw gpu::Error(flag + ": '" + text + "' is not a number");
     if (value < min || value > max)
-        throw gpu::Error(flag + ": " + text + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+        throw gpu::Error(flag + ": " + text + " is outside " + formatNumber(min) + ".." + formatNumber(max));
     return value;
 }
 
@@ -188,7 +191,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             if (!(options.cull.impostorThreshold > 0.0f)) throw gpu::Error(flag + ": the threshold must be above 0 pixels");
         }
         else if (flag == "--mesh-capacity") options.meshCapacity = parseCount(flag, next(), 1, kMaxCharacters);
-        else if (flag == "--start") options.startSeconds = parseNumber(flag, next(), 0.0f, 1e6f);
+        else if (flag == "--start") options.startSeconds = parseNumber(flag, next(), 0.0f, kMaxStartSeconds);
         else if (flag == "--lod-hysteresis") options.cull.hysteresis = parseNumber(flag, next(), 0.0f, 0.5f);
         else if (flag == "--cull") {
             const std::string mode = next();
@@ -228,6 +231,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         throw gpu::Error("--impostor-threshold: " + formatPixels(options.cull.impostorThreshold) +
                          " px is not below the LOD 2 threshold of " + formatPixels(options.cull.lodThresholds[1]) +
                          " px (--lod-thresholds A,B needs B > impostor threshold > 0)");
+    checkStartTime(options.startSeconds, options.scene.count, options.scene.behaviour);
     return options;
 }
 

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -16,21 +17,47 @@ namespace {
     throw gpu::Error("cannot write " + path.string() + ": " + std::strerror(error));
 }
 
-// Devices, FIFOs and the process's own streams (/dev/stdout, /proc/self/fd/N) are written in place:
-// renaming over them would replace a device node, or a file a shell opened for us, with a new file.
-bool writtenInPlace(const std::filesystem::path& path) {
-    const std::string text = path.string();
-    if (text.rfind("/dev/", 0) == 0 || text.rfind("/proc/", 0) == 0) return true;
-    struct stat info {};
-    return ::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode);
+// What writing a path means is decided by what the path names, never by how it is spelled (a new
+// /dev/shm/x.png is a regular file like any other).
+enum class Target {
+    StandardStream,  // the file open as our standard output or error (/dev/stdout, or its own name)
+    InPlace,         // an existing device, FIFO or other non-regular file (/dev/null, /dev/full)
+    Replaced,        // a regular file, or none yet: written whole under a temporary name, then renamed
+};
+
+// The standard stream (1 or 2) that `info` is the open file of, or -1. Reopening it (O_TRUNC at
+// offset 0) would write over what the program printed there, or be written over by it.
+int standardStreamOf(const struct stat& info) {
+    for (const int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+        struct stat stream {};
+        if (::fstat(fd, &stream) == 0 && stream.st_dev == info.st_dev && stream.st_ino == info.st_ino) return fd;
+    }
+    return -1;
 }
 
-// The regular file to replace: a symbolic link's target, so that the link stays a link.
+Target targetOf(const std::filesystem::path& path, int& streamFd) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) return Target::Replaced;  // nothing there yet (or a dangling link)
+    streamFd = standardStreamOf(info);
+    if (streamFd >= 0) return Target::StandardStream;
+    return S_ISREG(info.st_mode) ? Target::Replaced : Target::InPlace;
+}
+
+// The name a path stands for once its symbolic links are followed, the last one included even when
+// it points at nothing yet: like the shell's `>`, writing through a dangling link creates its target,
+// and the link stays a link. Fails with ELOOP as open(2) would on a cycle.
 std::filesystem::path replacedFile(const std::filesystem::path& path) {
-    std::error_code error;
-    if (!std::filesystem::is_symlink(path, error)) return path;
-    std::filesystem::path target = std::filesystem::canonical(path, error);
-    return error ? path : target;
+    constexpr int kMaxLinks = 40;  // Linux's own limit on links followed in one lookup
+    std::filesystem::path file = path;
+    for (int link = 0; link < kMaxLinks; ++link) {
+        struct stat info {};
+        if (::lstat(file.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return file;
+        std::error_code error;
+        const std::filesystem::path target = std::filesystem::read_symlink(file, error);
+        if (error) fail(path, error.value());
+        file = target.is_absolute() ? target : file.parent_path() / target;
+    }
+    fail(path, ELOOP);
 }
 
 // A name beside `file` that nothing else uses: hidden, and unique per process and call. The target's
@@ -74,6 +101,14 @@ int writeAll(int fd, std::span<const std::uint8_t> bytes) {
     return 0;
 }
 
+// Appends to the standard stream after what stdio still holds for it, so that both arrive whole and
+// in the order the program produced them.
+void writeToStream(const std::filesystem::path& path, int fd, std::span<const std::uint8_t> bytes) {
+    std::fflush(fd == STDOUT_FILENO ? stdout : stderr);
+    const int error = writeAll(fd, bytes);
+    if (error != 0) fail(path, error);
+}
+
 void writeInPlace(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
     const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) fail(path, errno);
@@ -104,10 +139,12 @@ void writeReplacing(const std::filesystem::path& path, std::span<const std::uint
 
 void writeFile(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
     if (path.empty()) throw gpu::Error("cannot write a file with an empty name");
-    if (writtenInPlace(path))
-        writeInPlace(path, bytes);
-    else
-        writeReplacing(path, bytes);
+    int streamFd = -1;
+    switch (targetOf(path, streamFd)) {
+        case Target::StandardStream: return writeToStream(path, streamFd, bytes);
+        case Target::InPlace: return writeInPlace(path, bytes);
+        case Target::Replaced: return writeReplacing(path, bytes);
+    }
 }
 
 void writeFile(const std::filesystem::path& path, std::string_view text) {
@@ -116,7 +153,14 @@ void writeFile(const std::filesystem::path& path, std::string_view text) {
 
 void checkWritable(const std::filesystem::path& path) {
     if (path.empty()) throw gpu::Error("cannot write a file with an empty name");
-    if (writtenInPlace(path)) {
+    int streamFd = -1;
+    const Target target = targetOf(path, streamFd);
+    if (target == Target::StandardStream) {
+        const int flags = ::fcntl(streamFd, F_GETFL);
+        if (flags < 0 || (flags & O_ACCMODE) == O_RDONLY) fail(path, EBADF);
+        return;
+    }
+    if (target == Target::InPlace) {
         struct stat info {};
         if (::stat(path.c_str(), &info) == 0 && S_ISFIFO(info.st_mode)) return;  // opening would wait for a reader
         const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);

@@ -1,5 +1,7 @@
 #include "skin/cpu_skinning.h"
 
+#include <cmath>
+
 namespace skin {
 namespace {
 
@@ -10,6 +12,13 @@ glm::dvec3 transformPoint(const gpu::BoneRows& b, const glm::dvec3& p) {
 
 glm::dvec3 transformDirection(const gpu::BoneRows& b, const glm::dvec3& d) {
     return {glm::dot(glm::dvec3(b.row0), d), glm::dot(glm::dvec3(b.row1), d), glm::dot(glm::dvec3(b.row2), d)};
+}
+
+// The blended normal made unit length; a collapsed one (its bones scale it to nothing) keeps the bind
+// normal, as the shaders do (shaders/skinning.glsl.inc).
+glm::dvec3 unitNormal(const glm::dvec3& skinned, const glm::dvec3& bind) {
+    const double length2 = glm::dot(skinned, skinned);
+    return length2 > COLLAPSED_NORMAL_LENGTH2 ? skinned / std::sqrt(length2) : bind;
 }
 
 }  // namespace
@@ -26,7 +35,7 @@ std::vector<CpuSkinnedVertex> skinOnCpu(const model::SkinnedModel& model, std::s
             position += weight * transformPoint(bone, glm::dvec3(v.position));
             normal += weight * transformDirection(bone, glm::dvec3(v.normal));
         }
-        out[i] = {position, glm::normalize(normal)};
+        out[i] = {position, unitNormal(normal, glm::dvec3(v.normal))};
     }
     return out;
 }

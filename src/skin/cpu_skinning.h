@@ -13,7 +13,7 @@ namespace skin {
 
 struct CpuSkinnedVertex {
     glm::dvec3 position;
-    glm::dvec3 normal;  // unit length
+    glm::dvec3 normal;  // unit length; the bind normal where the bones collapse it (COLLAPSED_NORMAL_LENGTH2)
 };
 
 // Skins every vertex of `model` with one character's bones (bones[joint], as the GPU receives them).

@@ -9,12 +9,14 @@
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
+#include "io/file_size_signal.h"
 #include "io/standard_output.h"
 #include "view/viewer.h"
 #include "view/viewer_options.h"
 
 int main(int argc, char** argv) {
     io::failOnUnwrittenStandardOutput("crowd-view");
+    io::failWritesPastTheFileSizeLimit();
     try {
         const view::ViewerOptions options = view::parseViewerOptions(std::vector<std::string>(argv + 1, argv + argc));
         if (options.render.help) return std::printf("%s%s", view::viewerUsage(), app::renderUsage()), 0;

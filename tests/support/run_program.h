@@ -15,8 +15,9 @@ struct ProgramResult {
 ProgramResult runProgram(const std::string& program, const std::string& arguments,
                          const std::string& environment = "", int timeoutSeconds = 120);
 
-// `program` as a command whose files may grow to at most `blocks` x 512 bytes (RLIMIT_FSIZE, with
-// SIGXFSZ ignored): a write past the limit fails as it would on a full disk. Pass it to runProgram.
+// `program` as a command whose files may grow to at most `blocks` x 512 bytes (RLIMIT_FSIZE), as a plain
+// `ulimit -f` sets it: SIGXFSZ is not ignored for the program, so a write past the limit kills it
+// unless it ignores the signal itself. Pass it to runProgram.
 std::string withFileSizeLimit(const std::string& program, int blocks);
 
 }  // namespace test

@@ -1,0 +1,11 @@
+#pragma once
+// Numbers in messages, written the way a person writes them: 0..1000000, 0.5, 12.25 (not
+// 0.000000..1000000.000000 as std::to_string prints a float, nor 1e+06 as %g does).
+#include <string>
+
+namespace app {
+
+// The shortest fixed-point text that reads back as `value` (no exponent, no trailing zeros).
+std::string formatNumber(float value);
+
+}  // namespace app
