@@ -110,12 +110,12 @@ TEST_F(CollapsedNormalsOnGpu, EverySkinningMethodWritesFiniteNormals) {
         characters[1].position = glm::vec3(3.0f, 0.0f, 0.0f);
         crowd::Crowd crowd(strip, characters);
         for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
-            frame::RendererOptions options;
+            app::RendererOptions options;
             options.size = {32, 32};
             options.method = method;
             options.cull.mode = render::CullMode::Off;
             options.cull.lod = false;
-            frame::CrowdRenderer renderer(*context, crowd, options);
+            app::CrowdRenderer renderer(*context, crowd, options);
             const float time = 0.5f;
             renderer.renderFrame(time);
             renderer.finish();
