@@ -27,5 +27,6 @@ cmake -S "$source/examples/embed_headless" -B "$root/example" -DCMAKE_PREFIX_PAT
 cmake --build "$root/example" -j2 >/dev/null
 mkdir "$root/out"
 CROWDGPU_VALIDATION=1 "$root/example/embed_headless" "$root/out" 256x192 3
-PKG_CONFIG_PATH=$root/usr/lib/pkgconfig pkg-config --modversion --cflags --libs crowdgpu
+export PKG_CONFIG_PATH=$root/usr/lib/pkgconfig
+echo "pkg-config: crowdgpu $(pkg-config --modversion crowdgpu): $(pkg-config --cflags --libs crowdgpu)"
 echo "check_deb: OK"
