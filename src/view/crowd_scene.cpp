@@ -5,6 +5,7 @@
 #include "app/crowd_app.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "skin/storage_ranges.h"
 
 namespace view {
 namespace {
@@ -63,8 +64,11 @@ std::uint32_t CrowdScene::maxCharacters(VkExtent2D size) const {
     // so the limit errs low) against the device's memory. A rebuild still checks the real size.
     const double perCharacter = static_cast<double>(app::estimateCrowdBytes(context_, *crowd_, method_, size)) /
                                 static_cast<double>(std::max(crowd_->size(), 1u));
-    const double limit = static_cast<double>(context_.deviceLocalBytes()) / std::max(perCharacter, 1.0);
-    return static_cast<std::uint32_t>(std::clamp(limit, 1.0, static_cast<double>(app::kMaxCharacters)));
+    const double memoryLimit = static_cast<double>(context_.deviceLocalBytes()) / std::max(perCharacter, 1.0);
+    // Nor may a buffer bound whole as a storage buffer outgrow the device's range (lavapipe: 128 MiB).
+    const double rangeLimit = static_cast<double>(
+        skin::maxCharactersInStorageRange(context_.properties.limits, *crowd_, method_, 0));
+    return static_cast<std::uint32_t>(std::clamp(std::min(memoryLimit, rangeLimit), 1.0, static_cast<double>(app::kMaxCharacters)));
 }
 
 }  // namespace view

@@ -44,7 +44,8 @@ public:
     const model::SkinnedModel& model() const { return *models_.models.front(); }
     const app::SceneOptions& options() const { return scene_; }
     skin::Method method() const { return method_; }
-    // The largest crowd of this model that fits the device's memory with this method (the panel's limit).
+    // The largest crowd of this model that fits the device's memory and storage-buffer range with this
+    // method (the panel's limit).
     std::uint32_t maxCharacters(VkExtent2D size) const;
     // What loading the model or resolving the clip noted (glTF parts left out, a clip replaced).
     std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
