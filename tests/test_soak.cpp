@@ -30,7 +30,8 @@ double peakMegabytes(int frames, const std::vector<std::string>& extra) {
     return static_cast<double>(r.peakKilobytes) / 1024.0;
 }
 
-// 450 more frames: the old growth was 190 MB over them; run-to-run noise is under 10 MB.
+// 450 more frames: the old growth was 190 MB over them; run-to-run noise is under 10 MB (under 1 MB
+// measured with two cores busy).
 constexpr double kAllowedGrowthMegabytes = 24.0;
 
 TEST(Soak, CrowdRenderPeakMemoryDoesNotGrowWithFrames) {
@@ -40,10 +41,10 @@ TEST(Soak, CrowdRenderPeakMemoryDoesNotGrowWithFrames) {
                                                            << " MB";
 }
 
-TEST(Soak, ComputeSkinningWithImpostorsPeakMemoryDoesNotGrowWithFrames) {
-    // The other compute passes: skinning by compute shader, the impostor draws' pass and a mesh cap.
-    const std::vector<std::string> extra = {"--method", "compute", "--impostors", "on", "--mesh-capacity", "2",
-                                            "--impostor-threshold", "4"};
+TEST(Soak, ComputeSkinningPeakMemoryDoesNotGrowWithFrames) {
+    // The skinning pass's indirect dispatches too. (Impostors are left to scripts/soak.sh: their atlas
+    // bake sets a peak that varies by tens of MB from run to run.)
+    const std::vector<std::string> extra = {"--method", "compute"};
     const double shortRun = peakMegabytes(50, extra);
     const double longRun = peakMegabytes(500, extra);
     EXPECT_LT(longRun - shortRun, kAllowedGrowthMegabytes) << "50 frames: " << shortRun << " MB, 500 frames: " << longRun
