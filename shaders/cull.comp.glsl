@@ -8,7 +8,7 @@
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
 
-layout(std140, set = 0, binding = 0) uniform Cull { CullUniforms cull; };
+layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 1) readonly buffer Models { ModelRecord models[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };

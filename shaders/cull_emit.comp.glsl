@@ -12,7 +12,7 @@ layout(push_constant) uniform Push {
     uint fixedLayout;       // 1: every character has its own skinned slot (the static method)
     uint characterDrawsOn;  // 1: write the per-character draws too
 };
-layout(std140, set = 0, binding = 0) uniform Cull { CullUniforms cull; };
+layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Frames { BucketFrame frames[]; };

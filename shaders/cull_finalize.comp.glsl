@@ -7,7 +7,7 @@
 
 layout(local_size_x = 1) in;
 
-layout(std140, set = 0, binding = 0) uniform Cull { CullUniforms cull; };
+layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };
 layout(std430, set = 0, binding = 4) buffer Frames { BucketFrame frames[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer Totals { DrawTotals totals; };

@@ -211,7 +211,10 @@ struct MotionPush {
     vec4 time;     // x: seconds, yzw: unused
 };
 
-// Per-frame parameters of the cull pass (a uniform buffer: the frustum alone is 96 bytes).
+// Per-frame parameters of the cull pass, in a storage buffer (the frustum alone is 96 bytes). Not a
+// uniform buffer: lavapipe (Mesa 22.3) "inlines" the uniform-buffer values that a large shader's
+// branches read, compiling a new copy of the shader at every bind and never freeing it (0.43 MB a
+// frame for cull.comp); storage-buffer values are never inlined. Push constants are uniforms too.
 struct CullUniforms {
     vec4 planes[6];  // world-space frustum planes, normals pointing inside: a sphere is outside when
                      // dot(n, centre) + w < -radius for some plane

@@ -266,6 +266,26 @@ TEST(ViewerProgram, ScriptedScreenshotMatchesCrowdRender) {
     std::filesystem::remove(png);
 }
 
+TEST(ViewerProgram, MeshCapacityGivesCrowdRendersPicture) {
+    SKIP_WITHOUT_XVFB();
+    // Impostors with a cap of 2 mesh-level characters: the other 14 are drawn as impostors, in both programs.
+    const std::string scene = "--count 16 --frames 3 --size 160x120 --impostors on --mesh-capacity 2 --validation";
+    const std::string png = tempFile("capped.png");
+    const test::ProgramResult r =
+        test::runProgram(xvfbRun() + kView, scene + deviceFlag() + " --no-ui --screenshot " + png);
+    expectCleanRun(r);
+    const render::Rgba8Image viewer = readPng(png);
+    const render::Rgba8Image reference = renderReference(scene, "capped-reference.png");
+    const render::Rgba8Image uncapped =
+        renderReference("--count 16 --frames 3 --size 160x120 --impostors on", "uncapped-reference.png");
+    ASSERT_EQ(viewer.width, 160u);
+    EXPECT_LT(test::fractionOfMatchingPixels(reference, uncapped, 2), 0.995) << "the cap changes nothing here";
+    const double matching = test::fractionOfMatchingPixels(viewer, reference, 2);
+    EXPECT_GE(matching, 0.995);
+    if (matching < 0.995) keepForInspection(viewer, reference, "viewer-capped");
+    std::filesystem::remove(png);
+}
+
 TEST(ViewerProgram, PanelDrawsOverTheSameSceneWithValidationSilent) {
     SKIP_WITHOUT_XVFB();
     const std::string scene = "--count 16 --frames 3 --size 640x360 --validation";

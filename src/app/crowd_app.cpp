@@ -21,6 +21,8 @@
 #include "render/geometry_pool.h"
 #include "render/impostor_atlas.h"
 #include "skin/skin_target_layout.h"
+#include "skin/skinned_capacity.h"
+#include "skin/storage_ranges.h"
 
 namespace app {
 
@@ -177,22 +179,9 @@ std::uint64_t imageBytes(VkExtent2D size) { return static_cast<std::uint64_t>(si
 
 std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
                                  VkExtent2D size, std::uint32_t meshCapacity) {
-    // Every character at LOD 0 (a frame's worst case; with a cap, the cap's characters at the largest
-    // LOD 0) and at every LOD (the static method's slots).
-    std::uint64_t skinnedCapacity = 0, fixedCapacity = 0, largestLod0 = 0;
-    std::vector<std::vector<model::SkinnedModel::Lod>> lods;
-    for (const model::SkinnedModel* m : crowd.models()) lods.push_back(render::lodsOf(*m));
-    for (const crowd::Character& c : crowd.characters()) {
-        skinnedCapacity += lods[c.model][0].vertexCount;
-        for (const model::SkinnedModel::Lod& lod : lods[c.model]) fixedCapacity += lod.vertexCount;
-    }
-    for (const auto& l : lods) largestLod0 = std::max<std::uint64_t>(largestLod0, l[0].vertexCount);
-    if (meshCapacity > 0 && meshCapacity < crowd.size())
-        skinnedCapacity = std::min(skinnedCapacity, largestLod0 * meshCapacity);
-    else
-        meshCapacity = 0;
+    const skin::SkinnedCapacity capacity = skin::skinnedCapacity(crowd, meshCapacity);
     std::uint64_t atlas = 0;
-    if (meshCapacity > 0) {
+    if (capacity.meshCapacity > 0) {
         std::vector<gpu::ModelRecord> records(crowd.models().size());
         atlas = render::planImpostors(crowd.models(), records, {}).bytes();
     }
@@ -200,8 +189,8 @@ std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd:
     const std::uint64_t needed =
         render::planBones(context, crowd).bytes() + characters * sizeof(gpu::CharacterRecord) +
         render::DrawLists::bytesFor(characters, static_cast<std::uint32_t>(crowd.models().size() * LOD_COUNT),
-                                    meshCapacity) + atlas +
-        skin::estimateMethodBytes(method, characters, skinnedCapacity, fixedCapacity,
+                                    capacity.meshCapacity) + atlas +
+        skin::estimateMethodBytes(method, characters, capacity.perFrame, capacity.fixed,
                                   skin::maxSkinTargetDimension(context, 0)) +
         imageBytes(size);
     return needed;
@@ -214,6 +203,7 @@ void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd
     if (needed > available)
         throw gpu::Error(describeShortfall({crowd.size(), size, skin::methodName(method), needed, imageBytes(size),
                                             available, context.description.name}));
+    skin::checkStorageRanges(context.properties.limits, crowd, method, meshCapacity);
 }
 
 render::CrowdShape crowdShape(const crowd::Crowd& crowd) {

@@ -64,7 +64,8 @@ crowd::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene);
 // (their skinned vertices and lists are sized for it; the impostor atlas is counted too).
 std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
                                  VkExtent2D size, std::uint32_t meshCapacity = 0);
-// Throws a one-line gpu::Error when the crowd cannot fit in the device's memory for this method.
+// Throws a one-line gpu::Error when the crowd cannot fit in the device's memory for this method, or a
+// buffer it binds whole as a storage buffer is over the device's range (skin/storage_ranges.h).
 void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size,
                     std::uint32_t meshCapacity = 0);
 

@@ -1,7 +1,10 @@
 // crowd-bench: the paper's Table 1 (fps for 1..4,096 characters, soldier and horse, per skinning
 // method) plus per-pass GPU times, the cost of each method relative to the static ceiling, CPU
 // times and memory, as a table, CSV and JSON.
+#include <algorithm>
 #include <chrono>
+#include <functional>
+#include <utility>
 #include <cstdio>
 #include <ctime>
 #include <string>
@@ -14,6 +17,8 @@
 #include "app/palette_bench.h"
 #include "app/scene_presets.h"
 #include "app/start_time.h"
+#include "crowd/host_memory.h"
+#include "gpu/buffer.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
 #include "io/output_file.h"
@@ -29,9 +34,9 @@ namespace {
 const char* kUsage = R"(crowd-bench: measures every skinning method on crowds of growing size (the paper's Table 1).
 
 usage: crowd-bench [options]
-  --scene NAME         measure a scene (paper-fig3, paper-fig4, paper-fig5, mixed, stress, default) with
-                       its crowd, culling, LOD and camera path instead of Table 1; its count unless
-                       --counts is given
+  --scene NAME         measure a scene (default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march
+                       or mill) with its crowd, culling, LOD and camera path instead of Table 1; its
+                       models and count unless --models and --counts are given
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
@@ -50,7 +55,8 @@ usage: crowd-bench [options]
   --size WxH           image size (default 1280x720)
   --pass-clock CLOCK   auto, timestamps or fence (default auto: fence on lavapipe, whose timestamps
                        do not bracket compute work, timestamps elsewhere)
-  --quick              1 and 16 characters, 5 frames, 2 warm-up, 320x180: under a minute on lavapipe
+  --quick              1 and 16 characters, 5 frames, 2 warm-up, 320x180 (flags given win): under a
+                       minute on lavapipe
   --palette            instead: bone-palette time of a milling, crossfading crowd of the first model on
                        the CPU (one thread, every thread) and on the GPU, for --counts (default
                        1024,4096,16384,65536,262144,1000000; 10 frames, 3 warm-up unless given)
@@ -60,30 +66,23 @@ usage: crowd-bench [options]
   --seed N             crowd layout seed (default 1)
   --validation         enable the Khronos validation layer
   --help               print this help
+crowd-render's other crowd and culling flags work too (--lod-thresholds, --lod-hysteresis, --clip),
+and every flag takes its value as --flag=value as well.
 Frame times are wall clock between frame starts with two frames in flight; per-pass GPU times come
 from the clock named in each row.
 )";
-
-app::RenderOptions tableOneScene() {
-    app::RenderOptions scene = app::parseRenderOptions({"--scene", "default"});
-    scene.scene.scene = "table-1";
-    scene.cull.mode = render::CullMode::Off;
-    scene.cull.lod = false;
-    return scene;
-}
 
 struct BenchOptions {
     // Each entry is one crowd's --model list (a scene's may mix models: soldier:3,horse:1).
     std::vector<std::string> models{"soldier", "horse"};
     // The scene and its settings; Table 1 is the paper's: no culling, no LOD, the whole crowd in view.
-    app::RenderOptions scene = tableOneScene();
+    app::RenderOptions scene;
     std::vector<std::string> methods;
     std::vector<std::uint32_t> counts{1, 16, 64, 256, 1024, 2048, 4096};
     std::uint32_t frames = 60, warmup = 10, seed = 1;
     VkExtent2D size{1280, 720};
     std::string passClock = "auto", csv, json, device, assetRoot;
     bool validation = false, help = false, palette = false;
-    bool countsGiven = false, framesGiven = false;
 };
 
 // "a,b,c"; an empty item ("1,,2", a trailing comma) is an error, not skipped.
@@ -98,88 +97,83 @@ std::vector<std::string> splitList(const std::string& flag, const std::string& t
     }
 }
 
-BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
-    BenchOptions o;
-    bool behaviourGiven = false, impostorsGiven = false, shadowsGiven = false, startGiven = false, sceneGiven = false, lodGiven = false, cullGiven = false, modelsGiven = false, countsGiven = false;
-    for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& flag = args[i];
-        auto next = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw gpu::Error(flag + " needs a value (see --help)");
-            if (args[i + 1].empty()) throw gpu::Error(flag + ": empty value");
-            return args[++i];
-        };
-        if (flag == "--help" || flag == "-h") o.help = true;
-        else if (flag == "--validation") o.validation = true;
-        else if (flag == "--quick") o.counts = {1, 16}, o.frames = 5, o.warmup = 2, o.size = {320, 180};
+// Whether the command line gives `flag` (as "--flag value" or "--flag=value").
+bool given(const std::vector<std::string>& args, const std::string& flag) {
+    for (const std::string& a : args)
+        if (a == flag || a.rfind(flag + "=", 0) == 0) return true;
+    return false;
+}
+
+// crowd-render's flags that name one crowd, one method or one image: crowd-bench measures lists of
+// them (--models, --counts, --methods) and writes no image.
+void refuseSingleRunFlags(const std::vector<std::string>& args) {
+    const std::pair<const char*, const char*> refused[] = {
+        {"--model", "--models"}, {"--count", "--counts"}, {"--method", "--methods"}, {"--out", nullptr},
+        {"--list-devices", nullptr}};
+    for (const auto& [flag, instead] : refused)
+        if (given(args, flag))
+            throw gpu::Error("unknown option '" + std::string(flag) + "'" +
+                             (instead ? std::string(" (crowd-bench measures lists: ") + instead + ")" : std::string()) +
+                             " (see --help)");
+}
+
+// crowd-bench's own flags; the rest are crowd-render's, parsed by the same code (app/options.h).
+app::ExtraFlagParser benchFlags(BenchOptions& o, bool& quick) {
+    return [&o, &quick](const std::string& flag, const std::function<std::string()>& value) {
+        if (flag == "--quick") quick = true;
         else if (flag == "--palette") o.palette = true;
-        else if (flag == "--scene") {
-            const app::ScenePreset& preset = app::findScenePreset(next());
-            const render::CullSettings keep = o.scene.cull;
-            const float keepStart = o.scene.startSeconds;
-            const bool keepShadows = o.scene.shadows;
-            const std::uint32_t keepCapacity = o.scene.meshCapacity;
-            const crowd::Behaviour keepBehaviour = o.scene.scene.behaviour;
-            const render::AnimationPath keepAnimation = o.scene.animation;
-            o.scene = app::parseRenderOptions({"--scene", preset.name});
-            o.scene.animation = keepAnimation;
-            if (behaviourGiven) o.scene.scene.behaviour = keepBehaviour;
-            if (impostorsGiven) {
-                o.scene.cull.impostors = keep.impostors, o.scene.cull.impostorThreshold = keep.impostorThreshold;
-                o.scene.meshCapacity = keepCapacity;
-            }
-            if (lodGiven) o.scene.cull.lod = keep.lod;
-            if (cullGiven) o.scene.cull.mode = keep.mode;
-            if (startGiven) o.scene.startSeconds = keepStart;
-            if (shadowsGiven) o.scene.shadows = keepShadows;
-            if (!modelsGiven) o.models = {preset.models};
-            if (!countsGiven) o.counts = {preset.count};
-            sceneGiven = true;
-        } else if (flag == "--behaviour") {
-            o.scene.scene.behaviour = app::parseRenderOptions({"--behaviour", next()}).scene.behaviour;
-            behaviourGiven = true;
-        } else if (flag == "--animation") {
-            o.scene.animation = app::parseRenderOptions({"--animation", next()}).animation;
-        } else if (flag == "--shadows") {
-            o.scene.shadows = app::parseRenderOptions({"--shadows", next()}).shadows;
-            shadowsGiven = true;
-        } else if (flag == "--impostors" || flag == "--impostor-threshold" || flag == "--mesh-capacity") {
-            const app::RenderOptions parsed = app::parseRenderOptions({flag, next()});
-            if (flag == "--impostors") o.scene.cull.impostors = parsed.cull.impostors;
-            if (flag == "--impostor-threshold") o.scene.cull.impostorThreshold = parsed.cull.impostorThreshold;
-            if (flag == "--mesh-capacity") o.scene.meshCapacity = parsed.meshCapacity;
-            impostorsGiven = true;
-        } else if (flag == "--start") {
-            o.scene.startSeconds = app::parseNumber(flag, next(), 0.0f, app::kMaxStartSeconds);
-            startGiven = true;
-        } else if (flag == "--lod") {
-            o.scene.cull.lod = app::parseRenderOptions({"--lod", next()}).cull.lod;
-            lodGiven = true;
-        } else if (flag == "--cull") {
-            o.scene.cull.mode = app::parseRenderOptions({"--cull", next()}).cull.mode;
-            cullGiven = true;
-        } else if (flag == "--models") o.models = splitList(flag, next()), modelsGiven = true;
-        else if (flag == "--asset-root") o.assetRoot = next();
-        else if (flag == "--methods") o.methods = splitList(flag, next());
+        else if (flag == "--models") o.models = splitList(flag, value());
+        else if (flag == "--methods") o.methods = splitList(flag, value());
         else if (flag == "--counts") {
-            countsGiven = true;
             o.counts.clear();
-            for (const std::string& c : splitList(flag, next())) o.counts.push_back(app::parseCount(flag, c, 1, app::kMaxCharacters));
-        } else if (flag == "--frames") o.frames = app::parseCount(flag, next(), 1, 100000), o.framesGiven = true;
-        else if (flag == "--warmup") o.warmup = app::parseCount(flag, next(), 0, 100000), o.framesGiven = true;
-        else if (flag == "--size") o.size = app::parseSize(flag, next());
-        else if (flag == "--pass-clock") o.passClock = next();
-        else if (flag == "--csv") o.csv = next();
-        else if (flag == "--json") o.json = next();
-        else if (flag == "--device") o.device = next();
-        else if (flag == "--seed") o.seed = app::parseCount(flag, next(), 0, UINT32_MAX);
-        else throw gpu::Error("unknown option '" + flag + "' (see --help)");
+            for (const std::string& c : splitList(flag, value())) o.counts.push_back(app::parseCount(flag, c, 1, app::kMaxCharacters));
+        } else if (flag == "--warmup") o.warmup = app::parseCount(flag, value(), 0, 100000);
+        else if (flag == "--pass-clock") o.passClock = value();
+        else if (flag == "--csv") o.csv = value();
+        else return false;
+        return true;
+    };
+}
+
+BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
+    refuseSingleRunFlags(args);
+    BenchOptions o;
+    bool quick = false;
+    for (skin::Method m : skin::allMethods()) o.methods.push_back(skin::methodName(m));
+    o.scene = app::parseRenderOptions(args, benchFlags(o, quick));
+    o.help = o.scene.help;
+    o.validation = o.scene.validation;
+    o.json = o.scene.json;
+    o.device = o.scene.device;
+    o.seed = o.scene.scene.seed;
+    o.assetRoot = o.scene.scene.assetRoot;
+    const bool sceneGiven = given(args, "--scene");
+    if (sceneGiven) {
+        // A scene's crowd, unless the lists are given.
+        const app::ScenePreset& preset = app::findScenePreset(o.scene.scene.scene);
+        if (!given(args, "--models")) o.models = {preset.models};
+        if (!given(args, "--counts")) o.counts = {preset.count};
+    } else {
+        // Table 1, as in the paper: no culling, no LOD, unless asked for.
+        o.scene.scene.scene = "table-1";
+        if (!given(args, "--cull")) o.scene.cull.mode = render::CullMode::Off;
+        if (!given(args, "--lod")) o.scene.cull.lod = false;
     }
-    (void)sceneGiven;
-    o.countsGiven = countsGiven;
-    for (const std::uint32_t count : o.counts) app::checkStartTime(o.scene.startSeconds, count, o.scene.scene.behaviour);
+    // Defaults of --quick and --palette; flags given anywhere on the line win over them.
+    const bool countsGiven = given(args, "--counts"), framesGiven = given(args, "--frames"),
+               warmupGiven = given(args, "--warmup");
+    if (quick) {
+        if (!countsGiven) o.counts = {1, 16};
+        if (!given(args, "--size")) o.scene.size = {320, 180};
+        if (!framesGiven) o.scene.frames = 5;
+        if (!warmupGiven) o.warmup = 2;
+    }
     if (o.palette && !countsGiven) o.counts = {1024, 4096, 16384, 65536, 262144, 1000000};
-    if (o.palette && !o.framesGiven) o.frames = 10, o.warmup = 3;
+    for (const std::uint32_t count : o.counts) app::checkStartTime(o.scene.startSeconds, count, o.scene.scene.behaviour);
+    if (o.palette && !framesGiven && !quick) o.scene.frames = 10;
+    if (o.palette && !warmupGiven && !quick) o.warmup = 3;
+    o.frames = framesGiven || quick || o.palette ? o.scene.frames : 60;
+    o.size = o.scene.size;
     skin::Method method;
     for (const std::string& m : o.methods)
         if (!skin::parseMethod(m, method)) throw gpu::Error("--methods: unknown method '" + m + "'");
@@ -212,6 +206,8 @@ app::BenchResult measure(const gpu::VulkanContext& context, const app::CrowdMode
     scenario.frames = options.frames;
     scenario.size = options.size;
     scenario.seed = options.seed;
+    // The clock the per-pass figures come from, also for a configuration that is skipped.
+    result.passes.passClock = gpu::passClockName(fencePasses ? gpu::PassClock::FenceWallClock : gpu::PassClock::TimestampQueries);
     try {
         result.frame = app::runScenario(context, models, scenario);
         result.passes = result.frame;
@@ -236,6 +232,29 @@ int validationStatus(const gpu::VulkanContext& context) {
     return 3;
 }
 
+// A run that measured nothing failed, even when each skip had its reason: status 1, naming the first.
+int nothingMeasuredStatus(std::size_t measured, const std::string& firstSkip) {
+    if (measured > 0) return 0;
+    std::fprintf(stderr, "crowd-bench: every configuration was skipped (first: %s)\n", firstSkip.c_str());
+    return 1;
+}
+
+// Refuses, before the device starts, counts whose crowds the host cannot hold (--palette also keeps
+// one bone matrix per joint of every character for its CPU runs).
+void checkHostMemory(const std::vector<app::CrowdModels>& crowds, const BenchOptions& options) {
+    const std::uint32_t largest = *std::max_element(options.counts.begin(), options.counts.end());
+    const std::uint64_t available = crowd::availableHostBytes();
+    const bool cpuPalettes = options.palette || options.scene.animation == render::AnimationPath::Cpu ||
+                             std::find(options.methods.begin(), options.methods.end(), "static") != options.methods.end();
+    for (const app::CrowdModels& models : crowds) {
+        const std::uint64_t needed = crowd::estimateHostBytes(models.pointers(), largest, cpuPalettes);
+        if (available > 0 && needed > available)
+            throw gpu::Error("--counts " + std::to_string(largest) + ": a crowd of " + app::modelNames(models) +
+                             " needs about " + gpu::formatBytes(needed) + " of host memory; " +
+                             gpu::formatBytes(available) + " is available");
+    }
+}
+
 int runPalettes(const gpu::VulkanContext& context, const app::CrowdModels& models, const BenchOptions& options,
                 const std::string& command, bool fencePasses) {
     app::PaletteBenchOptions palette;
@@ -245,13 +264,21 @@ int runPalettes(const gpu::VulkanContext& context, const app::CrowdModels& model
     palette.seed = options.seed;
     palette.clock = fencePasses ? gpu::PassClock::FenceWallClock : gpu::PassClock::TimestampQueries;
     const std::vector<app::PaletteRow> rows = app::runPaletteBench(context, models, palette);
+    std::size_t measured = 0;
+    std::string firstSkip;
+    for (const app::PaletteRow& row : rows) {
+        if (row.error.empty()) ++measured;
+        else if (firstSkip.empty()) firstSkip = std::to_string(row.characters) + " characters: " + row.error;
+    }
     std::printf("crowd-bench --palette: %s, driver %s, commit %s, %s\n", context.description.name.c_str(),
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     app::printPaletteTable(rows, app::modelNames(models));
     const app::BenchMeta meta{context.description.name, context.description.driver, CROWD_COMMIT, utcDate(), command,
                               options.frames, options.warmup, 64, 64};
+    if (!options.csv.empty()) app::writePaletteCsv(options.csv, meta, app::modelNames(models), rows);
     if (!options.json.empty()) app::writePaletteJson(options.json, meta, app::modelNames(models), rows);
-    return validationStatus(context);
+    if (const int status = validationStatus(context)) return status;
+    return nothingMeasuredStatus(measured, firstSkip);
 }
 
 int run(const BenchOptions& options, const std::string& command) {
@@ -261,6 +288,7 @@ int run(const BenchOptions& options, const std::string& command) {
     std::vector<app::CrowdModels> crowds;
     for (const std::string& modelList : options.models)
         crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot));
+    checkHostMemory(crowds, options);
     gpu::VulkanContext context({options.validation, options.device, {}, false});
     const bool fencePasses = options.passClock == "fence" ||
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
@@ -299,12 +327,13 @@ int run(const BenchOptions& options, const std::string& command) {
                         options.frames, options.warmup, options.size.width, options.size.height};
     if (!options.csv.empty()) app::writeCsv(options.csv, meta, results);
     if (!options.json.empty()) app::writeBenchJson(options.json, meta, results);
-    if (context.validationMessages() > 0) {
-        std::fprintf(stderr, "crowd-bench: %llu validation message(s)\n",
-                     static_cast<unsigned long long>(context.validationMessages()));
-        return 3;
-    }
-    return 0;
+    if (const int status = validationStatus(context)) return status;
+    const auto skipped = std::find_if(results.begin(), results.end(), [](const app::BenchResult& r) { return !r.ok; });
+    const std::size_t measured = static_cast<std::size_t>(
+        std::count_if(results.begin(), results.end(), [](const app::BenchResult& r) { return r.ok; }));
+    return nothingMeasuredStatus(measured, skipped == results.end() ? "" : skipped->model + " " + skipped->method +
+                                                                                " x " + std::to_string(skipped->count) +
+                                                                                ": " + skipped->error);
 }
 
 }  // namespace

@@ -157,6 +157,7 @@ std::string sceneName(const std::vector<std::string>& args) {
 RenderOptions parseRenderOptions(const std::vector<std::string>& args, const ExtraFlagParser& extra) {
     RenderOptions options;
     applyPreset(findScenePreset(sceneName(args)), options);
+    bool impostorThresholdGiven = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string flag = args[i];
         std::string value;
@@ -188,6 +189,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
             options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);
+            impostorThresholdGiven = true;
             if (!(options.cull.impostorThreshold > 0.0f)) throw gpu::Error(flag + ": the threshold must be above 0 pixels");
         }
         else if (flag == "--mesh-capacity") options.meshCapacity = parseCount(flag, next(), 1, kMaxCharacters);
@@ -226,8 +228,9 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         // --validation=no must not turn validation on.
         if (hasInlineValue && !valueTaken) throw gpu::Error(flag + " takes no value (got '" + flag + "=" + value + "')");
     }
-    // Checked once every flag is known: --lod-thresholds may come after it.
-    if (!(options.cull.impostorThreshold < options.cull.lodThresholds[1]))
+    // Checked once every flag is known: --lod-thresholds may come after it. Only when impostors are on or
+    // their threshold was given: otherwise the default threshold would refuse valid --lod-thresholds 20,10.
+    if ((options.cull.impostors || impostorThresholdGiven) && !(options.cull.impostorThreshold < options.cull.lodThresholds[1]))
         throw gpu::Error("--impostor-threshold: " + formatPixels(options.cull.impostorThreshold) +
                          " px is not below the LOD 2 threshold of " + formatPixels(options.cull.lodThresholds[1]) +
                          " px (--lod-thresholds A,B needs B > impostor threshold > 0)");

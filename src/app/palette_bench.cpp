@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -41,11 +42,14 @@ double cpuPaletteMs(const crowd::Crowd& crowd, float time, crowd::WorkerPool& po
 
 // The GPU passes with every character in view at LOD 0 (no culling, no LOD), so each gets a palette.
 // vs-instanced skins while drawing and needs no skinned buffer; a 64x64 image keeps the draw small.
+constexpr VkExtent2D kGpuImage{64, 64};
+constexpr skin::Method kGpuMethod = skin::Method::VertexShaderInstanced;
+
 void gpuPaletteMs(const gpu::VulkanContext& context, crowd::Crowd& crowd, const PaletteBenchOptions& options,
                   PaletteRow& row) {
     app::RendererOptions renderer;
-    renderer.size = {64, 64};
-    renderer.method = skin::Method::VertexShaderInstanced;
+    renderer.size = kGpuImage;
+    renderer.method = kGpuMethod;
     renderer.cull.mode = render::CullMode::Off;
     renderer.cull.lod = false;
     renderer.shadows = false;
@@ -58,22 +62,42 @@ void gpuPaletteMs(const gpu::VulkanContext& context, crowd::Crowd& crowd, const 
     const RunSummary summary = summarize(frames.stats(), options.warmup);
     row.gpuPaletteMs = summary.medianGpuMs.count("palette") ? summary.medianGpuMs.at("palette") : 0.0;
     row.gpuMotionMs = summary.medianGpuMs.count("motion") ? summary.medianGpuMs.at("motion") : 0.0;
-    row.gpuClock = summary.passClock;
+    row.gpuClock = gpu::passClockName(options.clock);  // the clock that ran (summarize() cannot know it)
 }
 
 double jointsPerSecond(std::uint64_t joints, double ms) { return ms > 0.0 ? static_cast<double>(joints) / (ms * 1e-3) : 0.0; }
 
 }  // namespace
 
+// Why a count cannot be measured on this device (its GPU passes' crowd does not fit), or "".
+std::string whyNotMeasurable(const gpu::VulkanContext& context, const CrowdModels& models, std::uint32_t count,
+                             std::uint32_t seed) {
+    try {
+        checkCrowdFits(context, millingCrowd(models, count, seed), kGpuMethod, kGpuImage);
+    } catch (const gpu::Error& error) {
+        return error.what();
+    }
+    return "";
+}
+
 std::vector<PaletteRow> runPaletteBench(const gpu::VulkanContext& context, const CrowdModels& models,
                                         const PaletteBenchOptions& options) {
     crowd::WorkerPool oneThread(1);
+    // Every count is decided before any is measured: a row that cannot run costs no measuring time.
     std::vector<PaletteRow> rows;
     for (std::uint32_t count : options.counts) {
-        std::fprintf(stderr, "palettes: %u characters\n", count);
         PaletteRow row;
         row.characters = count;
         row.threads = std::max(1u, std::thread::hardware_concurrency());
+        row.gpuClock = gpu::passClockName(options.clock);
+        row.error = whyNotMeasurable(context, models, count, options.seed);
+        if (!row.error.empty()) std::fprintf(stderr, "palettes: %u characters: skipped: %s\n", count, row.error.c_str());
+        rows.push_back(row);
+    }
+    for (PaletteRow& row : rows) {
+        if (!row.error.empty()) continue;
+        const std::uint32_t count = row.characters;
+        std::fprintf(stderr, "palettes: %u characters\n", count);
         try {
             crowd::Crowd crowd = millingCrowd(models, count, options.seed);
             crowd.advanceTo(options.time);
@@ -84,7 +108,6 @@ std::vector<PaletteRow> runPaletteBench(const gpu::VulkanContext& context, const
         } catch (const gpu::Error& error) {
             row.error = error.what();
         }
-        rows.push_back(row);
     }
     return rows;
 }
@@ -103,6 +126,23 @@ void printPaletteTable(const std::vector<PaletteRow>& rows, const std::string& m
                     r.cpuAllThreadsMs, jointsPerSecond(r.joints, r.cpuAllThreadsMs) * 1e-6, r.gpuPaletteMs,
                     jointsPerSecond(r.joints, r.gpuPaletteMs) * 1e-6, r.gpuMotionMs);
     }
+}
+
+void writePaletteCsv(const std::string& path, const BenchMeta& meta, const std::string& model,
+                     const std::vector<PaletteRow>& rows) {
+    std::ostringstream file;
+    file << "model,characters,joints,status,cpu_threads,cpu_1_thread_palette_ms,cpu_1_thread_joints_per_s,"
+            "cpu_all_threads_palette_ms,cpu_all_threads_joints_per_s,gpu_palette_ms,gpu_palette_joints_per_s,"
+            "gpu_motion_ms,gpu_clock,frames,warmup,device,driver,commit,date,error\n";
+    for (const PaletteRow& r : rows) {
+        file << model << ',' << r.characters << ',' << r.joints << ',' << (r.error.empty() ? "ok" : "skipped") << ','
+             << r.threads << ',' << r.cpuOneThreadMs << ',' << jointsPerSecond(r.joints, r.cpuOneThreadMs) << ','
+             << r.cpuAllThreadsMs << ',' << jointsPerSecond(r.joints, r.cpuAllThreadsMs) << ',' << r.gpuPaletteMs << ','
+             << jointsPerSecond(r.joints, r.gpuPaletteMs) << ',' << r.gpuMotionMs << ',' << r.gpuClock << ','
+             << meta.frames << ',' << meta.warmup << ",\"" << meta.device << "\",\"" << meta.driver << "\","
+             << meta.commit << ',' << meta.date << ",\"" << r.error << "\"\n";
+    }
+    io::writeFile(path, file.str());
 }
 
 void writePaletteJson(const std::string& path, const BenchMeta& meta, const std::string& model,

@@ -36,6 +36,9 @@ struct PaletteBenchOptions {
 std::vector<PaletteRow> runPaletteBench(const gpu::VulkanContext& context, const CrowdModels& models,
                                         const PaletteBenchOptions& options);
 void printPaletteTable(const std::vector<PaletteRow>& rows, const std::string& model);
+// One row per count, with the JSON's figures (skipped rows: status "skipped" and the reason).
+void writePaletteCsv(const std::string& path, const BenchMeta& meta, const std::string& model,
+                     const std::vector<PaletteRow>& rows);
 // Keys name what they hold: *_palette_ms and *_joints_per_s for each of cpu_1_thread, cpu_all_threads, gpu.
 void writePaletteJson(const std::string& path, const BenchMeta& meta, const std::string& model,
                       const std::vector<PaletteRow>& rows);

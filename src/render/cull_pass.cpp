@@ -64,14 +64,16 @@ constexpr gpu::Access kTransferWrite{VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_
 CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                    DrawLists& lists, std::uint32_t framesInFlight)
     : context_(context), pool_(pool), crowd_(crowd), lists_(lists) {
-    const VkDeviceSize align = context.properties.limits.minUniformBufferOffsetAlignment;
+    // A storage buffer, not a uniform buffer: lavapipe (Mesa 22.3) compiles a new copy of a large shader
+    // whose branches read uniform-buffer values at every bind and never frees it (gpu_types.h).
+    const VkDeviceSize align = context.properties.limits.minStorageBufferOffsetAlignment;
     uniformStride_ = (sizeof(gpu::CullUniforms) + align - 1) / align * align;
-    uniforms_ = gpu::createBuffer(context, uniformStride_ * framesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+    uniforms_ = gpu::createBuffer(context, uniformStride_ * framesInFlight, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                   gpu::MemoryUse::HostUpload, "cull uniforms");
     try {
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         const gpu::BufferBinding bindings[] = {
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, uniforms_.buffer, 0, sizeof(gpu::CullUniforms)},
+            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, uniforms_.buffer, 0, sizeof(gpu::CullUniforms)},
             {storage, pool.modelTable().buffer},         {storage, crowd.characters().buffer},
             {storage, lists.bucketRecords().buffer},     {storage, lists.bucketFrames().buffer},
             {storage, lists.visible().buffer},           {storage, lists.lodState().buffer},

@@ -1,5 +1,7 @@
 #include "skin/fragment_skin_pass.h"
 
+#include <algorithm>
+
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/crowd_buffers.h"
@@ -16,11 +18,15 @@ FragmentSkinPass::FragmentSkinPass(const MethodSetup& setup, const SkinnedVertex
       layout_(planSkinTargets(setup.lists.skinnedCapacity(), maxSkinTargetDimension(setup.context, setup.maxTargetDimension))) {
     try {
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        const VkDeviceSize half = skinned.streamBytes();
+        // two-pass writes attachments and copies them, never these bindings, so its buffer may outgrow the
+        // storage range: bind what the range allows. two-pass-direct stores into them, and its buffer is
+        // refused past the range (skin/skinned_vertex_buffer.h), so it is bound whole.
+        const VkDeviceSize stream = skinned.streamBytes();
+        const VkDeviceSize bound = std::min<VkDeviceSize>(stream, context_.properties.limits.maxStorageBufferRange);
         const gpu::BufferBinding bindings[] = {{storage, setup.pool.bindVertices().buffer},
                                                {storage, setup.crowd.bones().buffer},
-                                               {storage, skinned.buffer(), 0, half},
-                                               {storage, skinned.buffer(), half, half},
+                                               {storage, skinned.buffer(), 0, bound},
+                                               {storage, skinned.buffer(), stream, bound},
                                                {storage, setup.crowd.characters().buffer},
                                                {storage, setup.lists.bucketRecords().buffer},
                                                {storage, setup.lists.bucketFrames().buffer},

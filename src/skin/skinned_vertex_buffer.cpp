@@ -18,6 +18,13 @@ SkinnedVertexBuffer::SkinnedVertexBuffer(const gpu::VulkanContext& context, std:
                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | writerUsage,
                                 gpu::MemoryUse::DeviceLocal, "skinned vertex buffer");
+    // Shaders that store into it bind each stream whole (app/storage_ranges.h refuses such crowds first).
+    if ((writerUsage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) && streamBytes() > context.properties.limits.maxStorageBufferRange) {
+        gpu::destroyBuffer(context, buffer_);
+        throw gpu::Error("skinned vertices: " + gpu::formatBytes(bytesFor(capacity) / 2) +
+                         " per stream, over this device's storage-buffer range of " +
+                         gpu::formatBytes(context.properties.limits.maxStorageBufferRange));
+    }
 }
 
 SkinnedVertexBuffer::~SkinnedVertexBuffer() { gpu::destroyBuffer(context_, buffer_); }

@@ -22,8 +22,9 @@ namespace view {
 class CrowdScene {
 public:
     // Throws gpu::Error (one line) for a model, clip or crowd size that cannot be shown.
+    // `meshCapacity`: --mesh-capacity, which applies (as in crowd-render) when impostors are on.
     CrowdScene(const gpu::VulkanContext& context, const app::SceneOptions& scene, skin::Method method,
-               const render::CullSettings& cull, bool shadows, VkExtent2D size);
+               const render::CullSettings& cull, bool shadows, std::uint32_t meshCapacity, VkExtent2D size);
 
     // Builds the crowd for new scene options. Checks everything that can be checked (model, clip,
     // memory) before the current crowd is released, and throws gpu::Error keeping it when a check
@@ -44,17 +45,22 @@ public:
     const model::SkinnedModel& model() const { return *models_.models.front(); }
     const app::SceneOptions& options() const { return scene_; }
     skin::Method method() const { return method_; }
-    // The largest crowd of this model that fits the device's memory with this method (the panel's limit).
+    // The largest crowd of this model that fits the device's memory and storage-buffer range with this
+    // method (the panel's limit).
     std::uint32_t maxCharacters(VkExtent2D size) const;
     // What loading the model or resolving the clip noted (glTF parts left out, a clip replaced).
     std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
 
 private:
+    // The mesh-level cap of a crowd built with these cull settings (0: none).
+    std::uint32_t meshCapacityFor(const render::CullSettings& cull) const { return cull.impostors ? meshCapacity_ : 0u; }
+
     const gpu::VulkanContext& context_;
     app::SceneOptions scene_;
     skin::Method method_;
     render::CullSettings cull_;
     bool shadows_;
+    std::uint32_t meshCapacity_;
     render::AnimationPath animation_ = render::AnimationPath::Gpu;
     app::CrowdModels models_;
     std::unique_ptr<crowd::Crowd> crowd_;

@@ -128,7 +128,13 @@ void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
         changed = true;
     }
     // The first switch to impostors bakes the atlas (a second or so; the frame waits).
-    changed |= ImGui::Checkbox("impostors", &cull.impostors);
+    if (ImGui::Checkbox("impostors", &cull.impostors)) {
+        // LOD thresholds set while impostors were off may lie at or below the impostor threshold: the
+        // impostor level must stay below LOD 2, so it moves down (shown in "impostor px").
+        if (cull.impostors && !(cull.impostorThreshold < cull.lodThresholds[1]))
+            cull.impostorThreshold = 0.5f * cull.lodThresholds[1];
+        changed = true;
+    }
     float impostorPx = cull.impostorThreshold;
     if (ImGui::DragFloat("impostor px", &impostorPx, 0.5f, 1.0f, 2000.0f, "%.0f") && impostorPx > 0.0f &&
         impostorPx < cull.lodThresholds[1]) {

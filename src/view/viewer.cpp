@@ -50,7 +50,7 @@ Viewer::Viewer(const ViewerOptions& options)
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
       scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
-             swapchain_.extent()) {
+             options.render.meshCapacity, swapchain_.extent()) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
     scene_.setAnimation(options.render.animation);
     controls_.scenePath = options.render.camera != render::CameraPath::Framed;

@@ -1,0 +1,70 @@
+#include "skin/storage_ranges.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "gpu/buffer.h"
+#include "gpu/vulkan_error.h"
+#include "render/crowd_buffers.h"
+#include "skin/skinned_capacity.h"
+#include "skin/skinned_vertex_buffer.h"
+
+namespace skin {
+namespace {
+
+// Characters of this mix whose share of the binding fits `range` (the average share: errs low).
+std::uint64_t charactersFitting(const StorageBinding& binding, std::uint64_t range) {
+    const double perCharacter = static_cast<double>(binding.bytes) / static_cast<double>(std::max<std::uint64_t>(binding.holds, 1));
+    const auto fitting = static_cast<std::uint64_t>(static_cast<double>(range) / std::max(perCharacter, 1.0));
+    // Past its cap it holds no more, so a cap that fits lets any crowd fit.
+    return binding.capacityCap > 0 && fitting >= binding.capacityCap ? std::numeric_limits<std::uint64_t>::max() : fitting;
+}
+
+bool storesSkinnedVertices(Method method) {
+    return method == Method::Compute || method == Method::Static || method == Method::TwoPassDirect;
+}
+
+}  // namespace
+
+std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                                            Method method, std::uint32_t meshCapacity) {
+    const std::uint64_t n = crowd.size();
+    std::vector<StorageBinding> bindings = {{"bone matrices", render::planBones(limits, crowd).bytes(), n, 0},
+                                            {"character records", n * sizeof(gpu::CharacterRecord), n, 0}};
+    if (storesSkinnedVertices(method)) {
+        const SkinnedCapacity capacity = skinnedCapacity(crowd, meshCapacity);
+        const bool fixed = method == Method::Static;  // a slot per character and LOD, whatever the cap
+        // Positions and normals are two bindings of the same size.
+        bindings.push_back({"skinned vertex positions",
+                            SkinnedVertexBuffer::bytesFor(fixed ? capacity.fixed : capacity.perFrame) / 2,
+                            !fixed && capacity.meshCapacity > 0 ? capacity.meshCapacity : n, fixed ? 0u : meshCapacity});
+    }
+    return bindings;
+}
+
+void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
+                        std::uint32_t meshCapacity) {
+    const std::uint64_t range = limits.maxStorageBufferRange;
+    for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity)) {
+        if (b.bytes <= range) continue;
+        const std::uint64_t fitting = charactersFitting(b, range);
+        const bool capped = b.capacityCap > 0 && b.holds == b.capacityCap;
+        const std::string advice = capped ? "a --mesh-capacity of at most " + std::to_string(fitting) + " fits"
+                                          : "at most " + std::to_string(fitting) + " of these characters fit" +
+                                                (b.capacityCap > 0 ? ", or a --mesh-capacity of that many" : "");
+        const std::string flag = capped ? "--mesh-capacity " + std::to_string(b.capacityCap) : "--count " + std::to_string(crowd.size());
+        throw gpu::Error(flag + ": " + methodName(method) + " binds " +
+                         gpu::formatBytes(b.bytes) + " of " + b.what + " as one storage buffer, over this device's " +
+                         "limit of " + gpu::formatBytes(range) + " (" + advice + ")");
+    }
+}
+
+std::uint64_t maxCharactersInStorageRange(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                                          Method method, std::uint32_t meshCapacity) {
+    std::uint64_t most = std::numeric_limits<std::uint64_t>::max();
+    for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity))
+        most = std::min(most, charactersFitting(b, limits.maxStorageBufferRange));
+    return most;
+}
+
+}  // namespace skin

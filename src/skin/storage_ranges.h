@@ -1,0 +1,38 @@
+#pragma once
+// The buffers a crowd binds whole as one storage buffer, against the device's maxStorageBufferRange
+// (128 MiB on lavapipe, 2 or 4 GiB on desktop GPUs): a binding past it is invalid Vulkan, so a crowd
+// that needs one is refused before anything is allocated, and the viewer offers no such crowd.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "crowd/crowd.h"
+#include "skin/skinning_method.h"
+
+namespace skin {
+
+struct StorageBinding {
+    std::string what;
+    std::uint64_t bytes = 0;
+    std::uint64_t holds = 0;       // characters it is sized for: the crowd, or the mesh capacity in effect
+    std::uint32_t capacityCap = 0;  // it stops growing past this many characters (--mesh-capacity; 0: never)
+};
+
+// What this crowd binds with this method: bone matrices and character records always; the skinned
+// vertices' position (and, as large, normal) stream for the methods whose shaders store into them
+// (compute, static, two-pass-direct; two-pass copies into them and vs reads no skinned vertices).
+std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                                            Method method, std::uint32_t meshCapacity);
+
+// Throws a one-line gpu::Error naming the first binding over the range, its size, the limit and how
+// many characters of this crowd's mix would fit.
+void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
+                        std::uint32_t meshCapacity);
+
+// The most characters of this crowd's mix (same models, same shares) whose bindings all fit.
+std::uint64_t maxCharactersInStorageRange(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                                          Method method, std::uint32_t meshCapacity);
+
+}  // namespace skin

@@ -1,0 +1,132 @@
+// Buffers bound whole as one storage buffer must fit the device's maxStorageBufferRange (128 MiB on
+// lavapipe): a crowd that needs more is refused in one line before anything is allocated, and the
+// viewer's panel offers no such crowd. CPU only (the limits are given); the programs' side is in
+// the last test, on the tests' device.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "app/crowd_app.h"
+#include "gpu/vulkan_context.h"
+#include "render/geometry_pool.h"
+#include "skin/storage_ranges.h"
+#include "support/run_program.h"
+
+namespace {
+
+constexpr std::uint32_t kLavapipeRange = 128u << 20;
+
+VkPhysicalDeviceLimits lavapipeLimits() {
+    VkPhysicalDeviceLimits limits{};
+    limits.maxStorageBufferRange = kLavapipeRange;
+    limits.minStorageBufferOffsetAlignment = 16;
+    limits.minUniformBufferOffsetAlignment = 16;
+    return limits;
+}
+
+struct SoldierCrowd {
+    app::CrowdModels models = app::loadModels("soldier", 1);
+    crowd::Crowd crowd;
+    explicit SoldierCrowd(std::uint32_t count) : crowd(app::buildCrowd(models, sceneOf(count))) {}
+    static app::SceneOptions sceneOf(std::uint32_t count) {
+        app::SceneOptions scene;
+        scene.count = count;
+        return scene;
+    }
+    // Soldiers whose LOD 0 positions (16 bytes a vertex) fill the range.
+    std::uint32_t lod0Fitting() const {
+        return kLavapipeRange / (16u * render::lodsOf(*models.models.front())[0].vertexCount);
+    }
+    std::uint32_t allLodsFitting() const {
+        std::uint32_t vertices = 0;
+        for (const auto& lod : render::lodsOf(*models.models.front())) vertices += lod.vertexCount;
+        return kLavapipeRange / (16u * vertices);
+    }
+};
+
+std::string refusal(const crowd::Crowd& crowd, skin::Method method, std::uint32_t meshCapacity = 0) {
+    try {
+        skin::checkStorageRanges(lavapipeLimits(), crowd, method, meshCapacity);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(StorageRanges, SkinnedVerticesPastTheRangeAreRefusedForTheMethodsThatStoreIntoThem) {
+    const SoldierCrowd fits(SoldierCrowd(1).lod0Fitting());
+    const SoldierCrowd over(fits.crowd.size() + 1);
+    EXPECT_EQ(fits.crowd.size(), 10356u);  // the soldier: 810 vertices at LOD 0
+    for (skin::Method m : {skin::Method::Compute, skin::Method::TwoPassDirect}) {
+        EXPECT_EQ(refusal(fits.crowd, m), "") << skin::methodName(m);
+        const std::string message = refusal(over.crowd, m);
+        EXPECT_NE(message.find("--count 10357: "), std::string::npos) << message;
+        EXPECT_NE(message.find("skinned vertex positions"), std::string::npos) << message;
+        EXPECT_NE(message.find("at most 10356 of these characters fit"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+    // two-pass copies into the buffer and binds no more of it than the range; vs reads no skinned vertices.
+    for (skin::Method m : {skin::Method::TwoPass, skin::Method::VertexShader, skin::Method::VertexShaderInstanced})
+        EXPECT_EQ(refusal(over.crowd, m), "") << skin::methodName(m);
+}
+
+TEST(StorageRanges, StaticNeedsASlotPerLevelAndIsRefusedSooner) {
+    const std::uint32_t fitting = SoldierCrowd(1).allLodsFitting();
+    EXPECT_EQ(refusal(SoldierCrowd(fitting).crowd, skin::Method::Static), "");
+    const std::string message = refusal(SoldierCrowd(fitting + 1).crowd, skin::Method::Static);
+    EXPECT_NE(message.find("at most " + std::to_string(fitting) + " of these"), std::string::npos) << message;
+}
+
+TEST(StorageRanges, AMeshCapacityBoundsTheSkinnedVertices) {
+    const SoldierCrowd crowd(20000);
+    // Over the cap the skinned vertices are sized for the cap: one that fits lets the crowd fit.
+    EXPECT_EQ(refusal(crowd.crowd, skin::Method::Compute, 10000), "");
+    const std::string message = refusal(crowd.crowd, skin::Method::Compute, 12000);
+    EXPECT_EQ(message.rfind("--mesh-capacity 12000: ", 0), 0u) << message;
+    EXPECT_NE(message.find("a --mesh-capacity of at most 10356 fits"), std::string::npos) << message;
+}
+
+TEST(StorageRanges, TheViewersLimitIsTheMostThatFits) {
+    const SoldierCrowd crowd(100);
+    const VkPhysicalDeviceLimits limits = lavapipeLimits();
+    EXPECT_EQ(skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::Compute, 0), 10356u);
+    EXPECT_EQ(skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::Static, 0), crowd.allLodsFitting());
+    // two-pass: the bone matrices bound it (1,008 bytes a soldier packed tightly, 1,024 aligned to 16).
+    const std::uint64_t twoPass = skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::TwoPass, 0);
+    EXPECT_GT(twoPass, 100000u);
+    EXPECT_EQ(refusal(SoldierCrowd(static_cast<std::uint32_t>(twoPass)).crowd, skin::Method::TwoPass), "");
+    // With a cap that fits, the skinned vertices no longer bound it.
+    EXPECT_EQ(skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::Compute, 10000), twoPass);
+}
+
+TEST(StorageRanges, CrowdRenderRefusesInOneLineWhatTheDeviceCannotBindAndTwoPassDrawsItWithValidationSilent) {
+    const char* device = std::getenv("CROWD_TEST_DEVICE");
+    const std::uint64_t range =
+        gpu::VulkanContext({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
+    const SoldierCrowd one(1);
+    const std::uint64_t over = range / (16u * render::lodsOf(*one.models.models.front())[0].vertexCount) + 1;
+    if (over > app::kMaxCharacters) GTEST_SKIP() << "this device binds skinned vertices for every crowd size";
+    const std::string deviceFlag = device ? std::string(" --device '") + device + "'" : "";
+    const std::string png = (std::filesystem::temp_directory_path() /
+                             ("crowd-storage-" + std::to_string(::getpid()) + ".png")).string();
+    const std::string crowd = "--count " + std::to_string(over) + " --size 64x64 --frames 1 --validation" + deviceFlag +
+                              " --out " + png;
+    for (const char* method : {"compute", "two-pass-direct", "static"}) {
+        const test::ProgramResult r = test::runProgram(CROWD_RENDER_BINARY, crowd + " --method " + method);
+        EXPECT_EQ(r.exitCode, 1) << method << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << method << " printed:\n" << r.err;
+        EXPECT_EQ(r.err.rfind("crowd-render: --count " + std::to_string(over) + ": " + method + " binds ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find("as one storage buffer"), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(png)) << method << ": refused only after rendering";
+    }
+    // two-pass never binds its skinned vertices for the shaders to store into: the same crowd renders.
+    const test::ProgramResult r = test::runProgram(CROWD_RENDER_BINARY, crowd + " --method two-pass");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(png));
+    std::filesystem::remove(png);
+}
+
+}  // namespace
