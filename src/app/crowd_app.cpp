@@ -10,6 +10,7 @@
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
 #include "crowd/pose_bounds.h"
+#include "frame/memory_plan.h"
 #include "gpu/buffer.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
@@ -179,21 +180,12 @@ std::uint64_t imageBytes(VkExtent2D size) { return static_cast<std::uint64_t>(si
 
 std::uint64_t estimateCrowdBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method,
                                  VkExtent2D size, std::uint32_t meshCapacity) {
-    const skin::SkinnedCapacity capacity = skin::skinnedCapacity(crowd, meshCapacity);
-    std::uint64_t atlas = 0;
-    if (capacity.meshCapacity > 0) {
-        std::vector<gpu::ModelRecord> records(crowd.models().size());
-        atlas = render::planImpostors(crowd.models(), records, {}).bytes();
-    }
-    const std::uint64_t characters = crowd.size();
-    const std::uint64_t needed =
-        render::planBones(context, crowd).bytes() + characters * sizeof(gpu::CharacterRecord) +
-        render::DrawLists::bytesFor(characters, static_cast<std::uint32_t>(crowd.models().size() * LOD_COUNT),
-                                    capacity.meshCapacity) + atlas +
-        skin::estimateMethodBytes(method, characters, capacity.perFrame, capacity.fixed,
-                                  skin::maxSkinTargetDimension(context, 0)) +
-        imageBytes(size);
-    return needed;
+    // The library's own planner (what its renderer will allocate), and the programs' render target.
+    frame::RecorderOptions options;
+    options.method = method;
+    options.cull.impostors = meshCapacity > 0;
+    options.meshCapacity = meshCapacity;
+    return frame::planMemory(context, crowd, options).total() + imageBytes(size);
 }
 
 void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd, skin::Method method, VkExtent2D size,

@@ -77,7 +77,7 @@ CrowdRenderer::~CrowdRenderer() {
 }
 
 frame::CrowdRecorder& CrowdRenderer::recorder() const {
-    return *const_cast<crowdgpu::Renderer&>(renderer_).data().frame;
+    return *renderer_.data().frame;  // the library's recorder behind the public handle
 }
 
 render::FrameView CrowdRenderer::view(float time) const { return render::frameViewOf(camera, target_->extent(), time); }

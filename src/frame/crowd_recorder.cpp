@@ -12,18 +12,17 @@
 namespace frame {
 namespace {
 
-// The cap applies only when impostors are there from the start to take the characters beyond it.
-std::uint32_t meshCapacityOf(const RecorderOptions& options, const crowd::Crowd& crowd) {
-    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
-                                                                                                    : 0u;
-}
-
 std::uint32_t checkedFramesInFlight(std::uint32_t frames) {
     if (frames == 0 || frames > 8) throw gpu::Error("frames in flight must be 1 to 8, not " + std::to_string(frames));
     return frames;
 }
 
 }  // namespace
+
+std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::Crowd& crowd) {
+    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
+                                                                                                    : 0u;
+}
 
 CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options)
     : context_(context),
@@ -32,7 +31,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       framesInFlight_(checkedFramesInFlight(options.framesInFlight)),
       pool_(context, crowd.models()),
       buffers_(context, crowd, options.framesInFlight),
-      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityOf(options, crowd)),
+      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityInEffect(options, crowd)),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
       maxTargetDimension_(options.maxTargetDimension),

@@ -61,6 +61,10 @@ struct RecorderOptions {
     std::shared_ptr<const void> contextOwner;
 };
 
+// The mesh-level cap in effect: options.meshCapacity when impostors are on from the start to take the
+// characters beyond it and it is below the crowd's size, else 0 (no cap).
+std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::Crowd& crowd);
+
 // Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):
 // draw with the method's vertices and the geometry pool's indices from the indirect commands.
 struct FrameOutput {

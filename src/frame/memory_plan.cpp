@@ -4,6 +4,7 @@
 
 #include "gpu/vulkan_context.h"
 #include "skin/skin_target_layout.h"
+#include "skin/skinned_capacity.h"
 
 namespace frame {
 namespace {
@@ -37,25 +38,9 @@ std::uint64_t libraryBytes(const anim::ClipLibrary& library) {
            tableBytes(library.rootSamples());
 }
 
-// The characters drawn at a mesh level: every one, or the impostor cap's.
-std::uint32_t meshCapacityOf(const RecorderOptions& options, const crowd::Crowd& crowd) {
-    return options.cull.impostors && options.meshCapacity > 0 && options.meshCapacity < crowd.size() ? options.meshCapacity
-                                                                                                    : 0u;
-}
-
 std::uint64_t methodBytes(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RecorderOptions& options) {
-    // Every character at LOD 0 (a frame's worst case; with a cap, the cap's characters at the largest
-    // LOD 0) and at every LOD (the static method's slots): what render::DrawLists plans.
-    std::uint64_t skinned = 0, fixed = 0, largestLod0 = 0;
-    std::vector<std::vector<model::SkinnedModel::Lod>> lods;
-    for (const model::SkinnedModel* m : crowd.models()) lods.push_back(render::lodsOf(*m));
-    for (const crowd::Character& c : crowd.characters()) {
-        skinned += lods[c.model][0].vertexCount;
-        for (const model::SkinnedModel::Lod& lod : lods[c.model]) fixed += lod.vertexCount;
-    }
-    for (const auto& l : lods) largestLod0 = std::max<std::uint64_t>(largestLod0, l[0].vertexCount);
-    if (const std::uint32_t cap = meshCapacityOf(options, crowd)) skinned = std::min(skinned, largestLod0 * cap);
-    return skin::estimateMethodBytes(options.method, crowd.size(), skinned, fixed,
+    const skin::SkinnedCapacity capacity = skin::skinnedCapacity(crowd, meshCapacityInEffect(options, crowd));
+    return skin::estimateMethodBytes(options.method, crowd.size(), capacity.perFrame, capacity.fixed,
                                      skin::maxSkinTargetDimension(context, options.maxTargetDimension));
 }
 
@@ -77,7 +62,7 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                   {"clip library (GPU animation)", libraryBytes(crowd.library())},
                   {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
                   {"culling lists and draw commands",
-                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityOf(options, crowd))},
+                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd))},
                   {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
     if (options.cull.impostors) {
         std::vector<gpu::ModelRecord> records(crowd.models().size());
