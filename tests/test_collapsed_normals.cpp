@@ -102,7 +102,7 @@ TEST_F(CollapsedNormalsOnGpu, EverySkinningMethodWritesFiniteNormals) {
     for (const auto& [name, builder, clip] :
          {std::tuple{"zero-scale.gltf", stripWithHiddenTip(), 1u}, std::tuple{"zero-inverse-bind.gltf", stripWithZeroInverseBinds(), 0u}}) {
         const std::filesystem::path gltf = writeTemp(builder, name);
-        const model::SkinnedModel strip = app::loadModel(gltf.string(), 1);
+        const model::SkinnedModel strip = test::loadModel(gltf.string(), 1);
         std::filesystem::remove(gltf);
         ASSERT_EQ(strip.clips[clip].name, clip == 1u ? "hide" : "bend");
         std::vector<crowd::Character> characters(2);
@@ -110,12 +110,12 @@ TEST_F(CollapsedNormalsOnGpu, EverySkinningMethodWritesFiniteNormals) {
         characters[1].position = glm::vec3(3.0f, 0.0f, 0.0f);
         crowd::Crowd crowd(strip, characters);
         for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
-            app::RendererOptions options;
+            test::RendererOptions options;
             options.size = {32, 32};
             options.method = method;
             options.cull.mode = render::CullMode::Off;
             options.cull.lod = false;
-            app::CrowdRenderer renderer(*context, crowd, options);
+            test::TestRenderer renderer(*device, crowd, options);
             const float time = 0.5f;
             renderer.renderFrame(time);
             renderer.finish();

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "app/host_device.h"
+#include "app/host_memory.h"
 #include "app/crowd_app.h"
 #include "app/scene_presets.h"
 #include "crowd/host_memory.h"
@@ -37,7 +39,7 @@ std::string deviceFlag() {
 
 std::uint64_t storageRange() {
     const char* device = std::getenv("CROWD_TEST_DEVICE");
-    return gpu::VulkanContext({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
+    return app::HostDevice({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
 }
 
 std::vector<std::string> lines(const std::string& path) {
@@ -65,7 +67,7 @@ std::string column(const std::vector<std::string>& csv, std::size_t row, const s
 
 TEST(CrowdBenchChecks, ACrowdTheHostCannotHoldIsRefusedInOneLineBeforeAnythingIsAllocated) {
     const app::CrowdModels soldier = app::loadModels("soldier", 1);
-    if (crowd::estimateHostBytes(soldier.pointers(), app::kMaxCharacters, true) <= crowd::availableHostBytes())
+    if (crowdgpu::hostBytesNeeded(soldier.models, app::kMaxCharacters, true) <= app::availableHostBytes())
         GTEST_SKIP() << "this machine has the host memory for the largest crowd";
     const auto start = std::chrono::steady_clock::now();
     const test::ProgramResult r =

@@ -11,7 +11,7 @@
 #include "crowd/cull_reference.h"
 #include "app/crowd_renderer.h"
 #include "model/procedural_models.h"
-#include "render/camera_path.h"
+#include "app/camera_path.h"
 #include "support/gpu_test.h"
 
 namespace {
@@ -75,11 +75,11 @@ using test::GpuTest;
 crowd::Crowd gridCrowd(const model::SkinnedModel& model, std::uint32_t count) {
     app::SceneOptions scene;
     scene.count = count;
-    return crowd::Crowd(model, app::buildCharacters(model, scene));
+    return crowd::Crowd(model, test::buildCharacters(model, scene));
 }
 
 // The GPU's visible lists of the last frame, per bucket, sorted (atomics append in any order).
-crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const app::CrowdRenderer& renderer) {
+crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
     const render::DrawLists& lists = renderer.drawLists();
     const std::vector<std::byte> frames = test::readBuffer(context, lists.bucketFrames());
     const std::vector<std::byte> visible = test::readBuffer(context, lists.visible());
@@ -98,7 +98,7 @@ crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const ap
     return result;
 }
 
-std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const app::CrowdRenderer& renderer) {
+std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
     const std::vector<std::byte> bytes = test::readBuffer(context, renderer.drawLists().lodState());
     std::vector<std::uint32_t> state(renderer.buffers().characterCount());
     std::memcpy(state.data(), bytes.data(), state.size() * 4);
@@ -125,19 +125,19 @@ float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, 
 }  // namespace
 
 TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     crowd::Crowd crowd = gridCrowd(soldier, 900);
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {160, 90};
     options.method = skin::Method::Compute;
     options.cull.lodThresholds[0] = 30.0f;  // sizes a 90-pixel image shows, so every level is used
     options.cull.lodThresholds[1] = 12.0f;
-    app::CrowdRenderer renderer(*context, crowd, options);
-    const render::CrowdShape shape = app::crowdShape(crowd);
+    test::TestRenderer renderer(*device, crowd, options);
+    const app::CrowdShape shape = test::shapeOf(crowd);
     std::set<std::uint32_t> visibleCounts, levelsUsed, coarsestCounts;
     for (float seconds : {0.0f, 3.0f, 6.0f, 9.0f, 12.0f, 15.0f, 18.0f, 20.0f}) {
         const std::vector<std::uint32_t> before = readLodState(*context, renderer);
-        renderer.camera = render::cameraOnPath(render::CameraPath::FlyOver, shape, 160.0f / 90.0f, seconds);
+        renderer.camera = app::cameraOnPath(app::CameraPath::FlyOver, shape, 160.0f / 90.0f, seconds);
         renderer.renderFrame(seconds);
         renderer.finish();
         const gpu::CullUniforms uniforms = renderer.cullUniforms();
@@ -176,51 +176,51 @@ TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
 
 namespace {
 
-render::Rgba8Image renderAt(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::CullSettings& cull,
-                            const render::Camera& camera, skin::Method method = skin::Method::Compute,
+app::Rgba8Image renderAt(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::CullSettings& cull,
+                            const app::Camera& camera, skin::Method method = skin::Method::Compute,
                             render::LodCounts* lods = nullptr) {
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {192, 108};
     options.method = method;
     options.cull = cull;
-    app::CrowdRenderer renderer(context, crowd, options);
-    renderer.camera = camera;
+    test::TestRenderer renderer(context, crowd, options);
+    renderer.camera = test::appCamera(camera);
     renderer.renderFrame(1.25f);
-    render::Rgba8Image image = renderer.readback();
-    if (lods) *lods = renderer.stats().back().lods;
+    app::Rgba8Image image = renderer.readback();
+    if (lods) *lods = test::internalCounts(renderer.stats().back().lods);
     return image;
 }
 
 }  // namespace
 
 TEST_F(GpuTest, CulledCrowdRendersTheSameImageAsTheUnculledOne) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     crowd::Crowd crowd = gridCrowd(soldier, 256);
-    const render::Camera camera =
-        render::cameraOnPath(render::CameraPath::FlyOver, app::crowdShape(crowd), 192.0f / 108.0f, 8.0f);
+    const app::Camera camera =
+        app::cameraOnPath(app::CameraPath::FlyOver, test::shapeOf(crowd), 192.0f / 108.0f, 8.0f);
     render::CullSettings culled, unculled, onCpu;
     unculled.mode = render::CullMode::Off;
     onCpu.mode = render::CullMode::Cpu;
     render::LodCounts withCulling, without;
-    const render::Rgba8Image a = renderAt(*context, crowd, culled, camera, skin::Method::Compute, &withCulling);
-    const render::Rgba8Image b = renderAt(*context, crowd, unculled, camera, skin::Method::Compute, &without);
-    const render::Rgba8Image c = renderAt(*context, crowd, onCpu, camera);
+    const app::Rgba8Image a = renderAt(*context, crowd, culled, camera, skin::Method::Compute, &withCulling);
+    const app::Rgba8Image b = renderAt(*context, crowd, unculled, camera, skin::Method::Compute, &without);
+    const app::Rgba8Image c = renderAt(*context, crowd, onCpu, camera);
     EXPECT_LT(withCulling.visible(), without.visible()) << "the camera must leave characters out of view";
     EXPECT_EQ(without.visible(), crowd.size());
     // Same characters at the same levels; only the draw order differs (equal-depth pixels at most).
     const double matching = test::fractionOfMatchingPixels(a, b, 2);
     if (matching < 0.999) {
-        render::writePng(test::artifactPath("culled.png"), a);
-        render::writePng(test::artifactPath("unculled.png"), b);
+        app::writePng(test::artifactPath("culled.png"), a);
+        app::writePng(test::artifactPath("unculled.png"), b);
     }
     EXPECT_GE(matching, 0.999) << "images left in " << test::artifactPath("");
     EXPECT_GE(test::fractionOfMatchingPixels(a, c, 2), 0.999) << "CPU culling draws what GPU culling draws";
 }
 
 TEST_F(GpuTest, MixedCrowdRendersEachModelAsItsOwnCrowdDoes) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
-    const model::SkinnedModel horse = app::loadModel("horse", 1);
-    const test::MixedCrowdMatch match = test::compareMixedCrowd(*context, soldier, horse, 1.0f, "soldier-horse");
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    const model::SkinnedModel horse = test::loadModel("horse", 1);
+    const test::MixedCrowdMatch match = test::compareMixedCrowd(*device, soldier, horse, 1.0f, "soldier-horse");
     EXPECT_GT(match.firstModelPixels, 100u);
     EXPECT_GT(match.secondModelPixels, 100u);
     // Same characters, same math: only an edge pixel may round differently.
@@ -230,7 +230,7 @@ TEST_F(GpuTest, MixedCrowdRendersEachModelAsItsOwnCrowdDoes) {
 }
 
 TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     render::Camera camera;
     camera.eye = {0.0f, 1.0f, 20.0f};
     camera.target = {0.0f, 1.0f, 0.0f};
@@ -248,12 +248,12 @@ TEST_F(GpuTest, GpuKeepsACharacterCentredOnAFrustumPlaneAndDropsOneJustOutside) 
         return c;
     };
     crowd::Crowd crowd(soldier, {placeAt(0.0f), placeAt(-1.01f * radius), placeAt(-0.99f * radius)});
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {96, 64};
     options.method = skin::Method::Compute;
     options.shadows = false;  // the view alone decides (with shadows, casters outside it are kept)
-    app::CrowdRenderer renderer(*context, crowd, options);
-    renderer.camera = camera;
+    test::TestRenderer renderer(*device, crowd, options);
+    renderer.camera = test::appCamera(camera);
     renderer.renderFrame(0.0f);
     renderer.finish();
     const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(*context, renderer);

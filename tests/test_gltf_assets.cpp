@@ -108,7 +108,7 @@ TEST(GltfAssets, RestPoseSkinningReproducesTheBindPositionsAfterTheRootTransform
         ++present;
         const model::SkinnedModel m = model::loadGltf(assetPath(asset));
         const std::vector<skin::CpuSkinnedVertex> rest =
-            app::poseOnCpu(m, static_cast<std::uint32_t>(m.clips.size()), 0.0f);
+            skin::poseOnCpu(m, static_cast<std::uint32_t>(m.clips.size()), 0.0f);
         std::vector<glm::dvec3> bind;
         for (const gpu::SkinVertex& v : m.vertices)
             bind.emplace_back(glm::dmat4(m.skeleton.rootTransform) * glm::dvec4(v.position));
@@ -141,7 +141,7 @@ TEST(GltfAssets, SampledPosesMatchAnIndependentEvaluationOfTheNodeHierarchy) {
             for (const float fraction : {0.1f, 0.37f, 0.8f}) {
                 const float time = fraction * m.clips[c].duration;
                 const double distance = largestDistance(
-                    app::poseOnCpu(m, c, time), test::referenceSkinnedPositions(parsed, static_cast<int>(c), time));
+                    skin::poseOnCpu(m, c, time), test::referenceSkinnedPositions(parsed, static_cast<int>(c), time));
                 // float matrices against double ones: a few ulps of the character's extent.
                 EXPECT_LE(distance, 1e-5 * extent(m)) << asset.file << " " << m.clips[c].name << " at " << time << " s";
             }
@@ -153,7 +153,7 @@ TEST(GltfAssets, SampledPosesMatchAnIndependentEvaluationOfTheNodeHierarchy) {
 TEST(GltfAssets, RiggedSimpleAnimationBendsTheCylinder) {
     SKIP_WITHOUT(kRiggedSimple);
     const model::SkinnedModel m = model::loadGltf(assetPath(kRiggedSimple));
-    const std::vector<skin::CpuSkinnedVertex> rest = app::poseOnCpu(m, 1, 0.0f);  // clip 1 does not exist: rest pose
+    const std::vector<skin::CpuSkinnedVertex> rest = skin::poseOnCpu(m, 1, 0.0f);  // clip 1 does not exist: rest pose
     // The top of the cylinder: the vertex highest in the rest pose.
     std::size_t top = 0;
     for (std::size_t v = 0; v < rest.size(); ++v)
@@ -161,7 +161,7 @@ TEST(GltfAssets, RiggedSimpleAnimationBendsTheCylinder) {
     const tinygltf::Model parsed = test::parseWithTinygltf(assetPath(kRiggedSimple));
     double largest = 0.0;
     for (float time = 0.0f; time < m.clips[0].duration; time += 0.25f) {
-        const glm::dvec3 posed = app::poseOnCpu(m, 0, time)[top].position;
+        const glm::dvec3 posed = skin::poseOnCpu(m, 0, time)[top].position;
         const glm::dvec3 expected = test::referenceSkinnedPositions(parsed, 0, time)[top];
         EXPECT_LE(glm::length(posed - expected), 1e-5 * extent(m)) << "at " << time << " s";
         largest = std::max(largest, glm::length(posed - rest[top].position));
@@ -190,12 +190,12 @@ std::vector<crowd::Character> mixedCharacters(const model::SkinnedModel& model, 
 // Largest distance of a method's skinned vertices from the CPU reference, over every character.
 double gpuError(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method) {
     const model::SkinnedModel& m = crowd.model(0);
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
     options.cull.mode = render::CullMode::Off;  // every character, at full detail
     options.cull.lod = false;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
     renderer.finish();
@@ -214,12 +214,12 @@ double gpuError(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Met
     return largest;
 }
 
-render::Rgba8Image renderImage(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
+app::Rgba8Image renderImage(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
                                float time = 0.5f) {
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     renderer.renderFrame(time);
     return renderer.readback();
 }
@@ -233,8 +233,8 @@ void expectGpuMatchesCpu(const gpu::VulkanContext& context, const Asset& asset) 
     for (skin::Method method : {skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Compute})
         EXPECT_LE(gpuError(context, crowd, method), tolerance) << asset.file << " " << skin::methodName(method);
     // The vertex-shader methods leave no vertices to read back: they must draw the two-pass picture.
-    const render::Rgba8Image twoPass = renderImage(context, crowd, skin::Method::TwoPass);
-    const render::Rgba8Image vs = renderImage(context, crowd, skin::Method::VertexShader);
+    const app::Rgba8Image twoPass = renderImage(context, crowd, skin::Method::TwoPass);
+    const app::Rgba8Image vs = renderImage(context, crowd, skin::Method::VertexShader);
     EXPECT_GE(test::fractionOfMatchingPixels(vs, twoPass, 2), 0.995) << asset.file;
     EXPECT_LT(test::fractionOfMatchingPixels(twoPass, renderImage(context, crowd, skin::Method::TwoPass, 0.9f), 0), 1.0)
         << asset.file << ": the characters must be in the picture, and move";
@@ -326,7 +326,7 @@ TEST(GltfAssets, ExportPoseWritesTheSkinnedMeshAsTheSpecificationDefinesIt) {
     // crowd-render writes the vertices in its own order (levels of detail put the coarse levels' first):
     // compare each with the file's vertex it is.
     const std::vector<std::uint32_t> fileVertex = test::originalVertexOf(
-        model::loadGltf(assetPath(kCesiumMan)), app::loadModel(assetPath(kCesiumMan).string(), 1));
+        model::loadGltf(assetPath(kCesiumMan)), test::loadModel(assetPath(kCesiumMan).string(), 1));
     ASSERT_EQ(fileVertex.size(), expected.size());
     double largest = 0.0;
     for (std::size_t v = 0; v < expected.size(); ++v) {
@@ -342,8 +342,8 @@ TEST(GltfAssets, ExportPoseWorksForTheBuiltInModelsAndRejectsBadTimes) {
     test::ProgramResult r =
         test::runProgram(CROWD_RENDER_BINARY, "--model soldier --export-pose " + obj + " --clip run --time 0.3");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
-    const std::vector<skin::CpuSkinnedVertex> expected = app::poseOnCpu(soldier, app::clipIndex(soldier, "run"), 0.3f);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    const std::vector<skin::CpuSkinnedVertex> expected = skin::poseOnCpu(soldier, test::clipIndex(soldier, "run"), 0.3f);
     const Obj written = readObj(obj);
     std::filesystem::remove(obj);
     ASSERT_EQ(written.positions.size(), expected.size());
@@ -379,11 +379,11 @@ TEST_F(GpuTest, TwoTexturedGltfModelsInOneCrowdRenderAsTheirOwnCrowdsDo) {
     SKIP_WITHOUT(kCesiumMan);
     // Both textured: in the mixed crowd the Fox's texture is in slot 2, alone in slot 1, so a crowd
     // that mixed up slots or material bases would not match.
-    const model::SkinnedModel man = app::loadModel(assetPath(kCesiumMan).string(), 1);
-    const model::SkinnedModel fox = app::loadModel(assetPath(kFox).string(), 1);
+    const model::SkinnedModel man = test::loadModel(assetPath(kCesiumMan).string(), 1);
+    const model::SkinnedModel fox = test::loadModel(assetPath(kFox).string(), 1);
     ASSERT_FALSE(man.baseColorTexture.rgba.empty());
     ASSERT_FALSE(fox.baseColorTexture.rgba.empty());
-    const test::MixedCrowdMatch match = test::compareMixedCrowd(*context, man, fox, 1.0f, "cesiumman-fox");
+    const test::MixedCrowdMatch match = test::compareMixedCrowd(*device, man, fox, 1.0f, "cesiumman-fox");
     EXPECT_GT(match.firstModelPixels, 100u);
     EXPECT_GT(match.secondModelPixels, 30u);
     // Same characters, same math: only an edge pixel may round differently.

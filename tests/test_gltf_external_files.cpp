@@ -105,7 +105,7 @@ TEST_F(GltfExternalFiles, ImagesOutsideTheFolderAreRefusedToo) {
     const fs::path path = top / "model" / "textured.gltf";
     std::ofstream(path) << b.gltf();
     EXPECT_EQ(loadError(path), path.string() + ": URI '../secret.png' leads outside the model's folder "
-                                               "(--asset-root DIR allows a wider one)");
+                                               "(a wider asset root, the assetRoot argument, allows it)");
 }
 
 TEST_F(GltfExternalFiles, TheWorkingDirectoryIsNotSearched) {

@@ -9,6 +9,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "support/gpu_test.h"
+#include "app/error.h"
+#include "skin/cpu_skinning.h"
 #include "app/crowd_app.h"
 #include "gpu/vulkan_error.h"
 #include "model/gltf_loader.h"
@@ -27,7 +30,7 @@ void expectNear(const glm::dvec3& actual, const glm::dvec3& expected, double tol
 }
 
 std::vector<skin::CpuSkinnedVertex> pose(const model::SkinnedModel& m, const std::string& clip, float time) {
-    return app::poseOnCpu(m, app::clipIndex(m, clip), time);
+    return skin::poseOnCpu(m, test::clipIndex(m, clip), time);
 }
 
 }  // namespace
@@ -109,10 +112,10 @@ TEST(GltfLoader, UnnamedClipsAreNumberedAndClipsResolveByNameOrIndex) {
     const model::SkinnedModel m = test::loadText(b.gltf());
     ASSERT_EQ(m.clips.size(), 2u);
     EXPECT_EQ(m.clips[1].name, "clip1");
-    EXPECT_EQ(app::clipIndex(m, "clip1"), 1u);
-    EXPECT_EQ(app::clipIndex(m, "bend"), 0u);
-    EXPECT_EQ(app::clipIndex(m, "1"), 1u);
-    EXPECT_THROW(app::clipIndex(m, "moonwalk"), gpu::Error);
+    EXPECT_EQ(test::clipIndex(m, "clip1"), 1u);
+    EXPECT_EQ(test::clipIndex(m, "bend"), 0u);
+    EXPECT_EQ(test::clipIndex(m, "1"), 1u);
+    EXPECT_THROW(test::clipIndex(m, "moonwalk"), app::Error);
 }
 
 TEST(GltfLoader, JointsAreReorderedSoParentsComeFirst) {

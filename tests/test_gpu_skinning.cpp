@@ -47,12 +47,12 @@ struct SkinError {
 SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
                          crowd::Crowd crowd, std::uint32_t maxTargetDimension, skin::Method method,
                          const render::CullSettings& cull = fullDetail()) {
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
     options.maxTargetDimension = maxTargetDimension;
     options.cull = cull;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
     renderer.finish();
@@ -114,7 +114,7 @@ TEST_F(GpuTest, TwoPassTiledTargetsMatchCpuReference) {
 
 TEST_F(GpuTest, DirectFragmentAndComputeSkinningMatchCpuReference) {
     for (const char* name : {"soldier", "horse"}) {
-        const model::SkinnedModel model = app::loadModel(name, 1);
+        const model::SkinnedModel model = test::loadModel(name, 1);
         expectPassOneMatchesCpu(*context, model, 0, skin::Method::TwoPassDirect);
         expectPassOneMatchesCpu(*context, model, 256, skin::Method::TwoPassDirect);  // tiled
         expectPassOneMatchesCpu(*context, model, 0, skin::Method::Compute);
@@ -129,7 +129,7 @@ TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
     lod1.lodThresholds[0] = 1e6f, lod1.lodThresholds[1] = 1e-3f;
     lod2.lodThresholds[0] = 1e6f, lod2.lodThresholds[1] = 1e5f;
     for (const char* name : {"soldier", "horse"}) {
-        const model::SkinnedModel model = app::loadModel(name, 1);
+        const model::SkinnedModel model = test::loadModel(name, 1);
         crowd::Crowd crowd(model, mixedCharacters(model, 6));
         for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
             for (const render::CullSettings& cull : {lod1, lod2}) {
@@ -144,10 +144,10 @@ TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
 TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
     const model::SkinnedModel soldier = model::makeSoldier(1);
     crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {32, 32};
     options.maxTargetDimension = 64;
-    app::CrowdRenderer renderer(*context, crowd, options);
+    test::TestRenderer renderer(*device, crowd, options);
     const auto& layout = static_cast<skin::FragmentSkinning&>(renderer.method()).layout();
     EXPECT_GT(layout.tileCount, 1u);
     for (std::uint32_t t = 0; t < layout.tileCount; ++t) {
@@ -164,10 +164,10 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
     characters[1] = {walk, 0.2f, 1.0f, glm::vec3(4, 0, 0), 0.0f};  // same phase, elsewhere
     characters[2] = {walk, 0.6f, 1.0f, glm::vec3(8, 0, 0), 0.0f};  // other phase
     crowd::Crowd crowd(soldier, characters);
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {32, 32};
     options.cull = fullDetail();
-    app::CrowdRenderer renderer(*context, crowd, options);
+    test::TestRenderer renderer(*device, crowd, options);
     renderer.renderFrame(0.3f);
     renderer.finish();
     const auto n = static_cast<std::uint32_t>(soldier.vertices.size());
@@ -188,32 +188,32 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
 
 namespace {
 
-render::Rgba8Image renderScene(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
+app::Rgba8Image renderScene(const gpu::VulkanContext& context, crowd::Crowd crowd, skin::Method method,
                                std::uint32_t frames) {
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {192, 128};
     options.method = method;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     for (std::uint32_t f = 0; f < frames; ++f) renderer.renderFrame(app::frameTime(f));
     return renderer.readback();
 }
 
 void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const std::string& modelName) {
-    const model::SkinnedModel model = app::loadModel(modelName, 1);
+    const model::SkinnedModel model = test::loadModel(modelName, 1);
     app::SceneOptions scene;
     scene.model = modelName;
     scene.count = 16;
     scene.clip = "random";
-    crowd::Crowd crowd(model, app::buildCharacters(model, scene));
+    crowd::Crowd crowd(model, test::buildCharacters(model, scene));
     // One frame: "static" skins only its first frame, so every method shows the same poses there.
-    const render::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 1);
+    const app::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 1);
     for (skin::Method method : skin::allMethods()) {
         if (method == skin::Method::TwoPass) continue;
-        const render::Rgba8Image other = renderScene(context, crowd, method, 1);
+        const app::Rgba8Image other = renderScene(context, crowd, method, 1);
         const double matching = test::fractionOfMatchingPixels(other, twoPass, 2);
         if (matching < 0.995) {
-            render::writePng(test::artifactPath(modelName + "-" + skin::methodName(method) + ".png"), other);
-            render::writePng(test::artifactPath(modelName + "-two-pass.png"), twoPass);
+            app::writePng(test::artifactPath(modelName + "-" + skin::methodName(method) + ".png"), other);
+            app::writePng(test::artifactPath(modelName + "-two-pass.png"), twoPass);
         }
         // Same math in every method; only rounding (fused multiply-adds, stage differences) may move
         // an edge pixel, so at least 99.5% of pixels agree within 2/255 per channel.
@@ -221,7 +221,7 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
                                    << test::artifactPath("");
     }
     // And the match is not trivial: the animated crowd visibly changes the picture a few frames later.
-    const render::Rgba8Image later = renderScene(context, crowd, skin::Method::TwoPass, 12);
+    const app::Rgba8Image later = renderScene(context, crowd, skin::Method::TwoPass, 12);
     EXPECT_LT(test::fractionOfMatchingPixels(twoPass, later, 2), 0.99) << "the crowd must be visible and moving";
 }
 

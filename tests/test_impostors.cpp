@@ -10,7 +10,7 @@
 
 #include "app/crowd_app.h"
 #include "app/crowd_renderer.h"
-#include "render/camera_path.h"
+#include "app/camera_path.h"
 #include "render/impostor_cell.h"
 #include "render/impostor_pose.h"
 #include "support/gpu_test.h"
@@ -105,16 +105,16 @@ render::Camera cameraAt(const model::SkinnedModel& soldier, float elevation, flo
 }
 
 struct Renders {
-    render::Rgba8Image mesh, impostor;
+    app::Rgba8Image mesh, impostor;
 };
 
-Renders renderBoth(app::CrowdRenderer& renderer, const render::Camera& camera, float time) {
+Renders renderBoth(test::TestRenderer& renderer, const render::Camera& camera, float time) {
     render::CullSettings cull = renderer.cull();
     Renders result;
     for (const bool impostors : {false, true}) {
         cull.impostors = impostors;
         renderer.setCull(cull);
-        renderer.camera = camera;
+        renderer.camera = test::appCamera(camera);
         renderer.renderFrame(time);
         renderer.finish();
         const std::vector<app::FrameStats> stats = renderer.takeStats();
@@ -125,7 +125,7 @@ Renders renderBoth(app::CrowdRenderer& renderer, const render::Camera& camera, f
     return result;
 }
 
-bool differs(const render::Rgba8Image& a, const render::Rgba8Image& b, std::size_t i) {
+bool differs(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t i) {
     for (int k = 0; k < 3; ++k)
         if (a.pixels[i * 4 + k] != b.pixels[i * 4 + k]) return true;
     return false;
@@ -141,17 +141,17 @@ bool differs(const render::Rgba8Image& a, const render::Rgba8Image& b, std::size
 // is. Silhouettes differ by up to half a view step (11.25 degrees) and half a frame (1/32 cycle),
 // and a 31-pixel soldier is mostly edge, hence the tolerance; a wrong cell, view, frame or normal fails.
 TEST_F(GpuTest, ImpostorMatchesTheMeshAtTheSwitchSize) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     crowd::Crowd lit(soldier, row(soldier, 1.0f));
     crowd::Crowd dim(soldier, row(soldier, 0.6f));
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {320, 120};
     options.method = skin::Method::Compute;
     options.cull.impostors = true;  // bake once; renderBoth switches levels
     options.cull.hysteresis = 0.0f;  // the level follows the threshold at once
-    app::CrowdRenderer litRenderer(*context, lit, options);
+    test::TestRenderer litRenderer(*context, lit, options);
     options.atlas = litRenderer.impostorAtlas();
-    app::CrowdRenderer dimRenderer(*context, dim, options);
+    test::TestRenderer dimRenderer(*context, dim, options);
     for (const float elevation : {8.0f, 35.0f}) {
         for (const float time : {0.4f, 1.3f}) {
             const render::Camera camera = cameraAt(soldier, elevation, 31.0f);
@@ -196,8 +196,8 @@ TEST_F(GpuTest, ImpostorMatchesTheMeshAtTheSwitchSize) {
             EXPECT_GE(blockFraction, 0.90);
             EXPECT_NEAR(brightness, 1.0, 0.04);
             if (fraction < 0.80 || std::getenv("CROWD_KEEP_IMAGES")) {
-                render::writePng(test::artifactPath("impostor-mesh.png"), a.mesh);
-                render::writePng(test::artifactPath("impostor-impostor.png"), a.impostor);
+                app::writePng(test::artifactPath("impostor-mesh.png"), a.mesh);
+                app::writePng(test::artifactPath("impostor-impostor.png"), a.impostor);
             }
         }
     }
@@ -207,20 +207,20 @@ TEST_F(GpuTest, ImpostorMatchesTheMeshAtTheSwitchSize) {
 // picture, pixel for pixel; a time a frame later gives another (walk: 1.1 s, 16 frames, so frame 4
 // holds phases 0.219 to 0.281).
 TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     std::vector<crowd::Character> one = {row(soldier, 1.0f)[0]};
     one[0].clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
     one[0].timeOffset = 0.0f;
     one[0].position = glm::vec3(0.0f);
     crowd::Crowd crowd(soldier, one);
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {96, 96};
     options.method = skin::Method::Compute;
     options.cull.impostors = true;
     options.cull.impostorThreshold = 49.0f;
     options.cull.hysteresis = 0.0f;
-    app::CrowdRenderer renderer(*context, crowd, options);
-    renderer.camera = cameraAt(soldier, 20.0f, 40.0f);
+    test::TestRenderer renderer(*device, crowd, options);
+    renderer.camera = test::appCamera(cameraAt(soldier, 20.0f, 40.0f));
     const float duration = soldier.clips[one[0].clip].duration;
     auto picture = [&](float phase) {
         renderer.renderFrame(phase * duration);
@@ -228,7 +228,7 @@ TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
         EXPECT_EQ(renderer.takeStats().back().lods.impostors, 1u);
         return renderer.readback();
     };
-    const render::Rgba8Image early = picture(0.23f), late = picture(0.27f), next = picture(0.33f);
+    const app::Rgba8Image early = picture(0.23f), late = picture(0.27f), next = picture(0.33f);
     EXPECT_EQ(early.pixels, late.pixels);
     EXPECT_LT(test::fractionOfMatchingPixels(early, next, 0), 0.995);
 }
@@ -237,28 +237,28 @@ TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
 // near the camera, where both draw meshes, the pictures agree (99.5 % of the lower 40 % of the image
 // within 2/255), while the impostors do change the far field.
 TEST_F(GpuTest, MixedLevelsMatchTheAllMeshImageInTheNearField) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     app::SceneOptions scene;
     scene.count = 400;
-    crowd::Crowd crowd(soldier, app::buildCharacters(soldier, scene));
-    app::RendererOptions options;
+    crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
+    test::RendererOptions options;
     options.size = {320, 180};
     options.method = skin::Method::Compute;
     options.cull.lodThresholds[0] = 22.0f;
     options.cull.lodThresholds[1] = 17.0f;
     options.cull.impostorThreshold = 14.0f;
     options.cull.hysteresis = 0.0f;
-    app::CrowdRenderer renderer(*context, crowd, options);
-    const render::CrowdShape shape = app::crowdShape(crowd);
-    render::Rgba8Image images[2];
+    test::TestRenderer renderer(*device, crowd, options);
+    const app::CrowdShape shape = test::shapeOf(crowd);
+    app::Rgba8Image images[2];
     for (const bool impostors : {false, true}) {
         render::CullSettings cull = renderer.cull();
         cull.impostors = impostors;
         renderer.setCull(cull);
-        renderer.camera = render::cameraOnPath(render::CameraPath::Framed, shape, 320.0f / 180.0f, 0.0f);
+        renderer.camera = app::cameraOnPath(app::CameraPath::Framed, shape, 320.0f / 180.0f, 0.0f);
         renderer.renderFrame(11.0f);
         renderer.finish();
-        const render::LodCounts lods = renderer.takeStats().back().lods;
+        const render::LodCounts lods = test::internalCounts(renderer.takeStats().back().lods);
         if (impostors) {
             for (int l = 0; l < LOD_COUNT; ++l) EXPECT_GT(lods.characters[l], 0u) << "LOD " << l;
             EXPECT_GT(lods.impostors, 0u);
@@ -268,7 +268,7 @@ TEST_F(GpuTest, MixedLevelsMatchTheAllMeshImageInTheNearField) {
         images[impostors ? 1 : 0] = renderer.readback();
     }
     const std::uint32_t w = images[0].width, h = images[0].height, nearRows = h * 2 / 5;
-    render::Rgba8Image nearField[2];
+    app::Rgba8Image nearField[2];
     for (int i = 0; i < 2; ++i) {
         nearField[i] = {w, nearRows, {}};
         nearField[i].pixels.assign(images[i].pixels.end() - std::ptrdiff_t{w} * nearRows * 4, images[i].pixels.end());
@@ -279,7 +279,7 @@ TEST_F(GpuTest, MixedLevelsMatchTheAllMeshImageInTheNearField) {
     EXPECT_GE(near, 0.995);
     EXPECT_LT(whole, 0.999);
     if (near < 0.995 || std::getenv("CROWD_KEEP_IMAGES")) {
-        render::writePng(test::artifactPath("mixed-all-mesh.png"), images[0]);
-        render::writePng(test::artifactPath("mixed-levels.png"), images[1]);
+        app::writePng(test::artifactPath("mixed-all-mesh.png"), images[0]);
+        app::writePng(test::artifactPath("mixed-levels.png"), images[1]);
     }
 }

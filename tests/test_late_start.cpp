@@ -14,12 +14,12 @@ class LateStart : public test::GpuTest {};
 
 // The largest distance any vertex of character 0 moves between two frames at times a and b.
 double poseChange(const gpu::VulkanContext& context, crowd::Crowd& crowd, float a, float b) {
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {32, 32};
     options.method = skin::Method::Compute;
     options.cull.mode = render::CullMode::Off;
     options.cull.lod = false;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     renderer.renderFrame(a);
     renderer.finish();
     const test::ReadbackVertices first = test::readSkinnedCharacter(context, renderer, 0);

@@ -12,8 +12,8 @@
 #include "crowdgpu/version.h"
 #include "gpu/one_shot_commands.h"
 #include "gpu/vulkan_error.h"
-#include "render/camera_path.h"
-#include "render/render_target.h"
+#include "app/camera_path.h"
+#include "app/render_target.h"
 #include "render/scene_pass.h"
 #include "support/gpu_test.h"
 #include "support/run_program.h"
@@ -51,9 +51,9 @@ crowdgpu::Crowd defaultCrowd(std::uint32_t count) {
 crowdgpu::FrameView defaultView(const crowdgpu::Crowd& crowd, VkExtent2D size, float time) {
     float center[3], radius, tallest;
     crowd.bounds(center, radius, tallest);
-    const render::CrowdShape shape{glm::vec3(center[0], center[1], center[2]), radius, tallest};
+    const app::CrowdShape shape{glm::vec3(center[0], center[1], center[2]), radius, tallest};
     const float aspect = static_cast<float>(size.width) / static_cast<float>(size.height);
-    const render::Camera camera = render::cameraOnPath(render::CameraPath::Framed, shape, aspect, time);
+    const app::Camera camera = app::cameraOnPath(app::CameraPath::Framed, shape, aspect, time);
     const float eye[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
     const float target[3] = {camera.target.x, camera.target.y, camera.target.z};
     return crowdgpu::lookAt(eye, target, camera.verticalFov, camera.nearPlane, camera.farPlane, size, time);
@@ -62,10 +62,10 @@ crowdgpu::FrameView defaultView(const crowdgpu::Crowd& crowd, VkExtent2D size, f
 // One frame the way a host draws it: the crowd planned, compute and shadows recorded, then the
 // host's own colour pass with the ground and the characters.
 void recordFrame(crowdgpu::Renderer& renderer, VkCommandBuffer cmd, std::uint32_t slot,
-                 const crowdgpu::FrameView& view, render::RenderTarget& target) {
+                 const crowdgpu::FrameView& view, app::RenderTarget& target) {
     renderer.recordCompute(cmd, slot, view);
     renderer.recordShadows(cmd, slot);
-    const float sky[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+    const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
     target.beginRendering(cmd, sky);
     renderer.recordGround(cmd, slot);
     renderer.recordCharacters(cmd, slot);
@@ -77,16 +77,16 @@ void runSetup(const gpu::VulkanContext& context, crowdgpu::Renderer& renderer) {
     renderer.setupCompleted();
 }
 
-render::Rgba8Image bgraToRgba(render::Rgba8Image image) {
+app::Rgba8Image bgraToRgba(app::Rgba8Image image) {
     for (std::size_t i = 0; i < image.pixels.size(); i += 4) std::swap(image.pixels[i], image.pixels[i + 2]);
     return image;
 }
 
-render::Rgba8Image readPng(const std::string& path) {
+app::Rgba8Image readPng(const std::string& path) {
     int width = 0, height = 0, channels = 0;
     stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels, 4);
     if (!data) return {};
-    render::Rgba8Image image{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height),
+    app::Rgba8Image image{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height),
                              std::vector<std::uint8_t>(data, data + std::size_t(width) * height * 4)};
     stbi_image_free(data);
     return image;
@@ -119,7 +119,7 @@ TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
             test::runProgram(CROWD_RENDER_BINARY, std::string("--count 64 --method ") + methodFlag(method) +
                                                       " --frames 1 --size 256x144 --validation --out " + png);
         ASSERT_EQ(r.exitCode, 0) << r.err;
-        const render::Rgba8Image program = readPng(png);
+        const app::Rgba8Image program = readPng(png);
         ASSERT_EQ(program.width, size.width);
 
         crowdgpu::Crowd crowd = defaultCrowd(64);
@@ -129,12 +129,12 @@ TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
         settings.method = method;
         crowdgpu::Renderer renderer(host.device, crowd, settings);
         runSetup(*context, renderer);
-        render::RenderTarget target(*context, size, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT);
+        app::RenderTarget target(*device, size, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT);
         crowd.advanceTo(0.0f);
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
             recordFrame(renderer, cmd, 0, defaultView(crowd, size, 0.0f), target);
         });
-        const render::Rgba8Image embedded = bgraToRgba(target.readback());
+        const app::Rgba8Image embedded = bgraToRgba(target.readback());
         EXPECT_GE(test::fractionOfMatchingPixels(embedded, program, 1), 0.999) << methodFlag(method);
         std::filesystem::remove(png);
     }
@@ -157,7 +157,7 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
     crowdgpu::Renderer a(host.device, soldiers, settings), b(host.device, herd, settings);
     runSetup(*context, a);
     runSetup(*context, b);
-    render::RenderTarget target(*context, size);
+    app::RenderTarget target(*device, size);
     const float eye[3] = {4.0f, 9.0f, 24.0f}, at[3] = {4.0f, 0.5f, 0.0f};
 
     std::vector<VkCommandBuffer> cmds(2);
@@ -186,7 +186,7 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
         b.recordCompute(cmds[slot], slot, view);
         a.recordShadows(cmds[slot], slot);
         b.recordShadows(cmds[slot], slot);
-        const float sky[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+        const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
         target.beginRendering(cmds[slot], sky);
         a.recordGround(cmds[slot], slot);
         a.recordCharacters(cmds[slot], slot);
@@ -199,7 +199,7 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
         ASSERT_EQ(vkQueueSubmit(context->queue, 1, &submit, fences[slot]), VK_SUCCESS);
     }
     vkWaitForFences(context->device, 2, fences.data(), VK_TRUE, UINT64_MAX);
-    const render::Rgba8Image both = target.readback();
+    const app::Rgba8Image both = target.readback();
     EXPECT_GT(a.counts(1).characters[0] + a.counts(1).characters[1] + a.counts(1).characters[2], 0u);
     EXPECT_GT(b.counts(1).characters[0] + b.counts(1).characters[1] + b.counts(1).characters[2], 0u);
 
@@ -211,7 +211,7 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
             b.recordCompute(cmd, 0, view);
             a.recordShadows(cmd, 0);
             b.recordShadows(cmd, 0);
-            const float sky[4] = {render::kSkyColor.r, render::kSkyColor.g, render::kSkyColor.b, 1.0f};
+            const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
             target.beginRendering(cmd, sky);
             a.recordGround(cmd, 0);
             if (first) first->recordCharacters(cmd, 0);
@@ -220,7 +220,7 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
         });
         return target.readback();
     };
-    const render::Rgba8Image onlyA = alone(&a, nullptr), onlyB = alone(&b, nullptr), ground = alone(nullptr, nullptr);
+    const app::Rgba8Image onlyA = alone(&a, nullptr), onlyB = alone(&b, nullptr), ground = alone(nullptr, nullptr);
     std::size_t pixelsA = 0, pixelsB = 0, matching = 0, covered = 0;
     for (std::size_t i = 0; i < both.pixels.size(); i += 4) {
         const bool inA = std::memcmp(&onlyA.pixels[i], &ground.pixels[i], 3) != 0;

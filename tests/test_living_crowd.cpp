@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "api/api_data.h"
 #include "anim/blending_job.h"
 #include "anim/local_to_model.h"
 #include "anim/palette_job.h"
@@ -32,11 +33,11 @@ using test::GpuTest;
 constexpr float kFrame = 1.0f / 60.0f;
 
 const model::SkinnedModel& soldier() {
-    static const model::SkinnedModel m = app::loadModel("soldier", 1);
+    static const model::SkinnedModel m = test::loadModel("soldier", 1);
     return m;
 }
 const model::SkinnedModel& horse() {
-    static const model::SkinnedModel m = app::loadModel("horse", 1);
+    static const model::SkinnedModel m = test::loadModel("horse", 1);
     return m;
 }
 
@@ -175,9 +176,10 @@ crowd::Crowd millCrowd(std::uint32_t count, std::uint32_t seed) {
     scene.model = "soldier:3,horse:1";
     scene.count = count;
     scene.seed = seed;
-    scene.behaviour = crowd::Behaviour::Mill;
+    scene.behaviour = crowdgpu::Behaviour::Mill;
     static const app::CrowdModels models = app::loadModels("soldier:3,horse:1", 1);
-    return app::buildCrowd(models, scene);
+    crowdgpu::Crowd built = app::buildCrowd(models, scene);  // the static models keep its models alive
+    return std::move(built.data().crowd());
 }
 
 TEST(Behaviours, TheSameSeedGivesTheSameCrowdAtAnyFrameRate) {
@@ -222,9 +224,10 @@ TEST(Behaviours, MillingCharactersStandWalkRunAndStayNearHome) {
 TEST(Behaviours, AFormationComesBackToWhereItStartedAfterOneBeat) {
     app::SceneOptions scene;
     scene.count = 16;
-    scene.behaviour = crowd::Behaviour::March;
+    scene.behaviour = crowdgpu::Behaviour::March;
     static const app::CrowdModels models = app::loadModels("soldier", 1);
-    crowd::Crowd crowd = app::buildCrowd(models, scene);
+    crowdgpu::Crowd built = app::buildCrowd(models, scene);
+    crowd::Crowd& crowd = built.data().crowd();
     // Stand 1 s, march out, turn about, march back, turn about, halt: then it marches out again. Find
     // the second departure: the first time after the first halt that the formation moves again.
     std::vector<float> departures;
@@ -453,12 +456,12 @@ struct PaletteError {
 };
 
 PaletteError comparePalettes(const gpu::VulkanContext& context, crowd::Crowd& crowd, float time) {
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {64, 64};
     options.method = skin::Method::Compute;
     options.cull.mode = render::CullMode::Off;
     options.shadows = false;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     renderer.renderFrame(time);
     renderer.finish();
     const std::vector<std::byte> bytes = test::readBuffer(context, renderer.buffers().bones());
@@ -506,7 +509,7 @@ TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForTheSharedGltfAssets) {
     std::vector<model::SkinnedModel> assets;
     for (const char* file : {"fox/Fox.glb", "cesium-man/CesiumMan.glb", "rigged-simple/RiggedSimple.glb"}) {
         if (!std::filesystem::exists(root / file)) GTEST_SKIP() << "shared asset " << (root / file) << " not present";
-        assets.push_back(app::loadModel((root / file).string(), 1));
+        assets.push_back(test::loadModel((root / file).string(), 1));
     }
     for (const model::SkinnedModel& asset : assets) {
         crowd::Crowd crowd = crossfadingCrowd({&asset}, 12, 3.3f);
@@ -516,25 +519,25 @@ TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForTheSharedGltfAssets) {
     }
 }
 
-render::Rgba8Image renderMill(const gpu::VulkanContext& context, render::AnimationPath path, float time) {
+app::Rgba8Image renderMill(const gpu::VulkanContext& context, render::AnimationPath path, float time) {
     crowd::Crowd crowd = millCrowd(96, 2);
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {160, 96};
     options.method = skin::Method::Compute;
     options.animation = path;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     // A few frames before `time`, so segment uploads of several generations are exercised.
     for (float t : {time - 3.0f, time - 1.0f, time - kFrame, time}) {
-        renderer.camera = render::cameraOnPath(render::CameraPath::FlyOver, app::crowdShape(crowd), 160.0f / 96.0f, t);
+        renderer.camera = app::cameraOnPath(app::CameraPath::FlyOver, test::shapeOf(crowd), 160.0f / 96.0f, t);
         renderer.renderFrame(t);
     }
     return renderer.readback();
 }
 
 TEST_F(GpuTest, EitherAnimationPathDrawsTheSameMovingCrowd) {
-    const render::Rgba8Image cpu = renderMill(*context, render::AnimationPath::Cpu, 9.0f);
-    const render::Rgba8Image gpu = renderMill(*context, render::AnimationPath::Gpu, 9.0f);
-    const render::Rgba8Image earlier = renderMill(*context, render::AnimationPath::Gpu, 8.0f);
+    const app::Rgba8Image cpu = renderMill(*context, render::AnimationPath::Cpu, 9.0f);
+    const app::Rgba8Image gpu = renderMill(*context, render::AnimationPath::Gpu, 9.0f);
+    const app::Rgba8Image earlier = renderMill(*context, render::AnimationPath::Gpu, 8.0f);
     EXPECT_GT(test::fractionOfMatchingPixels(cpu, gpu, 2), 0.999);
     // ... and the crowd moves: a second earlier is another picture.
     EXPECT_LT(test::fractionOfMatchingPixels(gpu, earlier, 2), 0.98);

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/gpu_test.h"
+#include "skin/cpu_skinning.h"
 #include "app/crowd_app.h"
 #include "crowd/pose_bounds.h"
 #include "model/gltf_loader.h"
@@ -48,7 +50,7 @@ SkinnedModel original(const Character& c) {
 const SkinnedModel& loaded(const Character& c) {
     static std::map<std::string, SkinnedModel> cache;
     auto it = cache.find(c.name);
-    if (it == cache.end()) it = cache.emplace(c.name, app::loadModel(loadName(c), 1)).first;
+    if (it == cache.end()) it = cache.emplace(c.name, test::loadModel(loadName(c), 1)).first;
     return it->second;
 }
 
@@ -173,8 +175,8 @@ TEST_P(LodOf, ReorderedVerticesAreTheOriginalOnesAndLevelZeroDrawsTheSameSurface
     // skins to exactly the same place in every pose.
     ASSERT_EQ(m().indices.size(), before.indices.size());
     for (const auto& [clip, time] : somePoses(before)) {
-        const std::vector<skin::CpuSkinnedVertex> posed = app::poseOnCpu(m(), clip, time);
-        const std::vector<skin::CpuSkinnedVertex> expected = app::poseOnCpu(before, clip, time);
+        const std::vector<skin::CpuSkinnedVertex> posed = skin::poseOnCpu(m(), clip, time);
+        const std::vector<skin::CpuSkinnedVertex> expected = skin::poseOnCpu(before, clip, time);
         for (std::size_t k = 0; k < before.indices.size(); ++k)
             ASSERT_EQ(position(posed, m().indices[k]), position(expected, before.indices[k]))
                 << "corner " << k << ", clip " << clip << " at " << time << " s";
@@ -185,7 +187,7 @@ TEST_P(LodOf, SimplifiedLevelsSpanTheModelsBoxInEveryPose) {
     // A lost hand, rifle or ear, or a limb folded flat at its joint, would shrink the box: each corner
     // of a level's box stays within 3 % of the full mesh's diagonal.
     for (const auto& [clip, time] : somePoses(m())) {
-        const std::vector<skin::CpuSkinnedVertex> posed = app::poseOnCpu(m(), clip, time);
+        const std::vector<skin::CpuSkinnedVertex> posed = skin::poseOnCpu(m(), clip, time);
         std::vector<Box> boxes(m().lods.size());
         for (std::size_t l = 0; l < m().lods.size(); ++l)
             for (std::uint32_t index : m().lods[l].indices) boxes[l].add(position(posed, index));
@@ -225,7 +227,7 @@ TEST_P(LodOf, PoseSphereHoldsEveryVertexAtRandomTimesOfEveryClipButIsNotLoose) {
         std::uniform_real_distribution<float> times(0.0f, duration);
         for (int sample = 0; sample < 40; ++sample) {
             const float time = times(random);
-            for (const skin::CpuSkinnedVertex& v : app::poseOnCpu(m(), clip, time)) {
+            for (const skin::CpuSkinnedVertex& v : skin::poseOnCpu(m(), clip, time)) {
                 const double distance = glm::length(v.position - center);
                 ASSERT_LE(distance, radius) << "clip " << clip << " at " << time << " s";
                 farthest = std::max(farthest, distance);

@@ -5,14 +5,14 @@
 #include "app/memory_shortfall.h"
 #include "app/number_text.h"
 #include "app/options.h"
-#include "gpu/vulkan_error.h"
+#include "app/error.h"
 
 namespace {
 
 std::string parseError(const std::string& flag, const std::string& text, float min, float max) {
     try {
         app::parseNumber(flag, text, min, max);
-    } catch (const gpu::Error& error) {
+    } catch (const app::Error& error) {
         return error.what();
     }
     return "";

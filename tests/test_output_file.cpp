@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/vulkan_error.h"
+#include "app/error.h"
 #include "io/output_file.h"
 
 namespace {
@@ -32,12 +32,12 @@ protected:
         std::sort(names.begin(), names.end());
         return names;
     }
-    // The message of the gpu::Error `write` throws, or "" when it throws none.
+    // The message of the app::Error `write` throws, or "" when it throws none.
     template <typename Write>
     std::string errorOf(Write write) const {
         try {
             write();
-        } catch (const gpu::Error& error) {
+        } catch (const app::Error& error) {
             return error.what();
         }
         return "";

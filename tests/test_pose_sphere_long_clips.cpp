@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/gpu_test.h"
+#include "skin/cpu_skinning.h"
 #include "app/crowd_app.h"
 #include "crowd/pose_bounds.h"
 #include "support/gltf_builder.h"
@@ -31,7 +33,7 @@ test::GltfBuilder stripWithLongClip(float duration, float spikeAt, float spikeWi
 // Every vertex of `model` playing `clip` at `time` lies in its pose sphere.
 void expectPoseInSphere(const model::SkinnedModel& model, std::uint32_t clip, float time) {
     const glm::vec4 sphere = model.poseSphere;
-    for (const skin::CpuSkinnedVertex& v : app::poseOnCpu(model, clip, time))
+    for (const skin::CpuSkinnedVertex& v : skin::poseOnCpu(model, clip, time))
         EXPECT_LE(glm::length(v.position - glm::dvec3(sphere)), sphere.w) << "at " << time << " s";
 }
 
@@ -59,7 +61,7 @@ TEST(PoseSphereOfLongClips, ClipsOfAbsurdLengthLoadQuicklyWithAConservativeSpher
             test::runProgram(CROWD_RENDER_BINARY, "--model " + gltf.string() + " --list-clips", "", 30);
         EXPECT_EQ(r.exitCode, 0) << duration << " s: " << r.err;
         EXPECT_NE(r.out.find("pose sphere"), std::string::npos) << r.out;
-        const model::SkinnedModel strip = app::loadModel(gltf.string(), 1);
+        const model::SkinnedModel strip = test::loadModel(gltf.string(), 1);
         std::filesystem::remove(gltf);
         expectPoseInSphere(strip, 1, spikeAt);
         expectPoseInSphere(strip, 1, spikeAt / 3.0f);

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "app/options.h"
-#include "gpu/vulkan_error.h"
+#include "app/error.h"
 #include "support/run_program.h"
 
 namespace {
@@ -14,7 +14,7 @@ namespace {
 std::string refusal(const std::vector<std::string>& args) {
     try {
         app::parseRenderOptions(args);
-    } catch (const gpu::Error& e) {
+    } catch (const app::Error& e) {
         return e.what();
     }
     return "";

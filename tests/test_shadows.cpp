@@ -27,7 +27,7 @@ namespace {
 using test::GpuTest;
 
 struct Shot {
-    render::Rgba8Image image;
+    app::Rgba8Image image;
     glm::mat4 viewProjection;
 };
 
@@ -36,19 +36,19 @@ Shot renderSoldier(const gpu::VulkanContext& context, const model::SkinnedModel&
     crowd::Character c;
     c.clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
     crowd::Crowd crowd(soldier, {c});
-    app::RendererOptions options;
+    test::RendererOptions options;
     options.size = {160, 120};
     options.method = skin::Method::Compute;
     options.shadows = shadows;
-    app::CrowdRenderer renderer(context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     renderer.camera.eye = {0.0f, 5.0f, 6.0f};
     renderer.camera.target = {0.0f, 0.5f, 0.0f};
     renderer.renderFrame(time);
-    return {renderer.readback(), renderer.camera.viewProjection(160.0f / 120.0f)};
+    return {renderer.readback(), test::internalCamera(renderer.camera).viewProjection(160.0f / 120.0f)};
 }
 
 // Pixels that shadows darkened by more than 8 of 255 in every colour channel.
-std::vector<bool> darkened(const render::Rgba8Image& on, const render::Rgba8Image& off) {
+std::vector<bool> darkened(const app::Rgba8Image& on, const app::Rgba8Image& off) {
     std::vector<bool> mask(on.pixels.size() / 4);
     for (std::size_t i = 0; i < mask.size(); ++i) {
         bool darker = true;
@@ -66,7 +66,7 @@ glm::vec2 toPixel(const glm::mat4& viewProjection, const glm::vec3& world, int w
 }  // namespace
 
 TEST_F(GpuTest, ShadowDarkensTheGroundBesideTheCharacterAwayFromTheLight) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const Shot on = renderSoldier(*context, soldier, 0.2f, true);
     const Shot off = renderSoldier(*context, soldier, 0.2f, false);
     const std::vector<bool> mask = darkened(on.image, off.image);
@@ -86,7 +86,7 @@ TEST_F(GpuTest, ShadowDarkensTheGroundBesideTheCharacterAwayFromTheLight) {
 }
 
 TEST_F(GpuTest, ShadowMovesWithTheAnimatedLimbs) {
-    const model::SkinnedModel soldier = app::loadModel("soldier", 1);
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const std::vector<bool> early =
         darkened(renderSoldier(*context, soldier, 0.0f, true).image, renderSoldier(*context, soldier, 0.0f, false).image);
     const std::vector<bool> later =

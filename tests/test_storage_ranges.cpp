@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "api/api_data.h"
+#include "app/host_device.h"
 #include "app/crowd_app.h"
 #include "gpu/vulkan_context.h"
 #include "render/geometry_pool.h"
@@ -28,8 +30,10 @@ VkPhysicalDeviceLimits lavapipeLimits() {
 
 struct SoldierCrowd {
     app::CrowdModels models = app::loadModels("soldier", 1);
-    crowd::Crowd crowd;
-    explicit SoldierCrowd(std::uint32_t count) : crowd(app::buildCrowd(models, sceneOf(count))) {}
+    crowdgpu::Crowd publicCrowd;
+    crowd::Crowd& crowd;
+    explicit SoldierCrowd(std::uint32_t count)
+        : publicCrowd(app::buildCrowd(models, sceneOf(count))), crowd(publicCrowd.data().crowd()) {}
     static app::SceneOptions sceneOf(std::uint32_t count) {
         app::SceneOptions scene;
         scene.count = count;
@@ -37,11 +41,11 @@ struct SoldierCrowd {
     }
     // Soldiers whose LOD 0 positions (16 bytes a vertex) fill the range.
     std::uint32_t lod0Fitting() const {
-        return kLavapipeRange / (16u * render::lodsOf(*models.models.front())[0].vertexCount);
+        return kLavapipeRange / (16u * render::lodsOf(models.models.front().data()->model)[0].vertexCount);
     }
     std::uint32_t allLodsFitting() const {
         std::uint32_t vertices = 0;
-        for (const auto& lod : render::lodsOf(*models.models.front())) vertices += lod.vertexCount;
+        for (const auto& lod : render::lodsOf(models.models.front().data()->model)) vertices += lod.vertexCount;
         return kLavapipeRange / (16u * vertices);
     }
 };
@@ -62,7 +66,7 @@ TEST(StorageRanges, SkinnedVerticesPastTheRangeAreRefusedForTheMethodsThatStoreI
     for (skin::Method m : {skin::Method::Compute, skin::Method::TwoPassDirect}) {
         EXPECT_EQ(refusal(fits.crowd, m), "") << skin::methodName(m);
         const std::string message = refusal(over.crowd, m);
-        EXPECT_NE(message.find("--count 10357: "), std::string::npos) << message;
+        EXPECT_EQ(message.rfind("a crowd of 10357 characters: ", 0), 0u) << message;  // the library's words, no flag
         EXPECT_NE(message.find("skinned vertex positions"), std::string::npos) << message;
         EXPECT_NE(message.find("at most 10356 of these characters fit"), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -84,8 +88,9 @@ TEST(StorageRanges, AMeshCapacityBoundsTheSkinnedVertices) {
     // Over the cap the skinned vertices are sized for the cap: one that fits lets the crowd fit.
     EXPECT_EQ(refusal(crowd.crowd, skin::Method::Compute, 10000), "");
     const std::string message = refusal(crowd.crowd, skin::Method::Compute, 12000);
-    EXPECT_EQ(message.rfind("--mesh-capacity 12000: ", 0), 0u) << message;
-    EXPECT_NE(message.find("a --mesh-capacity of at most 10356 fits"), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("a crowd of 20000 characters: compute binds ", 0), 0u) << message;
+    EXPECT_NE(message.find("a mesh capacity of at most 10356 fits"), std::string::npos) << message;
+    EXPECT_EQ(message.find("--"), std::string::npos) << message;
 }
 
 TEST(StorageRanges, TheViewersLimitIsTheMostThatFits) {
@@ -104,9 +109,9 @@ TEST(StorageRanges, TheViewersLimitIsTheMostThatFits) {
 TEST(StorageRanges, CrowdRenderRefusesInOneLineWhatTheDeviceCannotBindAndTwoPassDrawsItWithValidationSilent) {
     const char* device = std::getenv("CROWD_TEST_DEVICE");
     const std::uint64_t range =
-        gpu::VulkanContext({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
+        app::HostDevice({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
     const SoldierCrowd one(1);
-    const std::uint64_t over = range / (16u * render::lodsOf(*one.models.models.front())[0].vertexCount) + 1;
+    const std::uint64_t over = range / (16u * render::lodsOf(one.models.models.front().data()->model)[0].vertexCount) + 1;
     if (over > app::kMaxCharacters) GTEST_SKIP() << "this device binds skinned vertices for every crowd size";
     const std::string deviceFlag = device ? std::string(" --device '") + device + "'" : "";
     const std::string png = (std::filesystem::temp_directory_path() /

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
-#include "render/png_writer.h"
+#include "app/png_writer.h"
 #include "support/gpu_test.h"
 #include "support/run_program.h"
 #include "view/camera_controller.h"
@@ -24,8 +24,8 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Camera control
 
-render::Camera homeCamera() {
-    render::Camera camera;
+app::Camera homeCamera() {
+    app::Camera camera;
     camera.eye = {0.0f, 10.0f, 20.0f};
     camera.target = {0.0f, 1.0f, 0.0f};
     camera.nearPlane = 0.2f;
@@ -40,7 +40,7 @@ view::CameraController controllerAtHome() {
     return controller;
 }
 
-float distanceToTarget(const render::Camera& camera) { return glm::length(camera.eye - camera.target); }
+float distanceToTarget(const app::Camera& camera) { return glm::length(camera.eye - camera.target); }
 
 TEST(ViewerCamera, NoInputLeavesTheHomeViewBitForBit) {
     // Scripted runs rely on it: the viewer's frame N must be crowd-render's frame N.
@@ -51,8 +51,8 @@ TEST(ViewerCamera, NoInputLeavesTheHomeViewBitForBit) {
         controller.setMode(mode);
         controller.update(idle);
     }
-    const render::Camera& camera = controller.camera();
-    const render::Camera home = homeCamera();
+    const app::Camera& camera = controller.camera();
+    const app::Camera home = homeCamera();
     EXPECT_EQ(camera.eye, home.eye);
     EXPECT_EQ(camera.target, home.target);
     EXPECT_EQ(camera.nearPlane, home.nearPlane);
@@ -64,7 +64,7 @@ TEST(ViewerCamera, OrbitDragCirclesTheTargetAtTheSameDistance) {
     view::CameraInput drag;
     drag.orbitDrag = {120.0f, -40.0f};
     controller.update(drag);
-    const render::Camera& camera = controller.camera();
+    const app::Camera& camera = controller.camera();
     EXPECT_EQ(camera.target, homeCamera().target);
     EXPECT_NEAR(distanceToTarget(camera), distanceToTarget(homeCamera()), 1e-4f);
     EXPECT_GT(glm::length(camera.eye - homeCamera().eye), 1.0f);
@@ -100,7 +100,7 @@ TEST(ViewerCamera, FlyMovesEyeAndTargetTogether) {
     forward.move = {0.0f, 0.0f, 1.0f};
     forward.seconds = 0.5f;
     controller.update(forward);
-    const render::Camera& camera = controller.camera();
+    const app::Camera& camera = controller.camera();
     const glm::vec3 moved = camera.eye - homeCamera().eye;
     // Half a second at two character heights per second (more than a quarter of the radius per second).
     EXPECT_NEAR(glm::length(moved), 0.5f * 2.0f * 1.8f, 1e-3f);
@@ -176,7 +176,7 @@ TEST(ViewerFrameHistory, AveragesGpuTimePerPassInFirstSeenOrder) {
     view::FrameHistory history;
     history.add(frameStats(16.0, 1.0));
     history.add(frameStats(16.0, 3.0));
-    const std::vector<gpu::PassTime> passes = history.meanGpuMs();
+    const std::vector<app::PassTime> passes = history.meanGpuMs();
     ASSERT_EQ(passes.size(), 2u);
     EXPECT_EQ(passes[0].pass, "skin");
     EXPECT_DOUBLE_EQ(passes[0].milliseconds, 2.0);
@@ -216,22 +216,22 @@ std::string xvfbRun() {
     GTEST_SKIP() << "xvfb-run or xauth not found: the viewer tests need a virtual X server "                  \
                     "(scripts/setup.sh --tests installs xvfb and xauth)"
 
-render::Rgba8Image readPng(const std::string& path) {
+app::Rgba8Image readPng(const std::string& path) {
     int width = 0, height = 0, channels = 0;
     stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels, 4);
     if (!data) return {};
-    render::Rgba8Image image{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height),
+    app::Rgba8Image image{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height),
                              std::vector<std::uint8_t>(data, data + static_cast<std::size_t>(width) * height * 4)};
     stbi_image_free(data);
     return image;
 }
 
 // crowd-render's picture of the same scene, size and frame count.
-render::Rgba8Image renderReference(const std::string& scene, const std::string& name) {
+app::Rgba8Image renderReference(const std::string& scene, const std::string& name) {
     const std::string png = tempFile(name);
     const test::ProgramResult r = test::runProgram(kRender, scene + deviceFlag() + " --out " + png);
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    render::Rgba8Image image = readPng(png);
+    app::Rgba8Image image = readPng(png);
     std::filesystem::remove(png);
     return image;
 }
@@ -242,9 +242,9 @@ void expectCleanRun(const test::ProgramResult& r) {
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
-void keepForInspection(const render::Rgba8Image& viewer, const render::Rgba8Image& reference, const std::string& name) {
-    render::writePng(test::artifactPath(name + "-view.png"), viewer);
-    render::writePng(test::artifactPath(name + "-render.png"), reference);
+void keepForInspection(const app::Rgba8Image& viewer, const app::Rgba8Image& reference, const std::string& name) {
+    app::writePng(test::artifactPath(name + "-view.png"), viewer);
+    app::writePng(test::artifactPath(name + "-render.png"), reference);
 }
 
 TEST(ViewerProgram, ScriptedScreenshotMatchesCrowdRender) {
@@ -256,8 +256,8 @@ TEST(ViewerProgram, ScriptedScreenshotMatchesCrowdRender) {
     const test::ProgramResult r =
         test::runProgram(xvfbRun() + kView, scene + deviceFlag() + " --no-ui --screenshot " + png);
     expectCleanRun(r);
-    const render::Rgba8Image viewer = readPng(png);
-    const render::Rgba8Image reference = renderReference(scene, "scripted-reference.png");
+    const app::Rgba8Image viewer = readPng(png);
+    const app::Rgba8Image reference = renderReference(scene, "scripted-reference.png");
     ASSERT_EQ(viewer.width, 160u);
     ASSERT_EQ(viewer.height, 120u);
     const double matching = test::fractionOfMatchingPixels(viewer, reference, 2);
@@ -274,9 +274,9 @@ TEST(ViewerProgram, MeshCapacityGivesCrowdRendersPicture) {
     const test::ProgramResult r =
         test::runProgram(xvfbRun() + kView, scene + deviceFlag() + " --no-ui --screenshot " + png);
     expectCleanRun(r);
-    const render::Rgba8Image viewer = readPng(png);
-    const render::Rgba8Image reference = renderReference(scene, "capped-reference.png");
-    const render::Rgba8Image uncapped =
+    const app::Rgba8Image viewer = readPng(png);
+    const app::Rgba8Image reference = renderReference(scene, "capped-reference.png");
+    const app::Rgba8Image uncapped =
         renderReference("--count 16 --frames 3 --size 160x120 --impostors on", "uncapped-reference.png");
     ASSERT_EQ(viewer.width, 160u);
     EXPECT_LT(test::fractionOfMatchingPixels(reference, uncapped, 2), 0.995) << "the cap changes nothing here";
@@ -292,8 +292,8 @@ TEST(ViewerProgram, PanelDrawsOverTheSameSceneWithValidationSilent) {
     const std::string png = tempFile("panel.png");
     const test::ProgramResult r = test::runProgram(xvfbRun() + kView, scene + deviceFlag() + " --screenshot " + png);
     expectCleanRun(r);
-    const render::Rgba8Image viewer = readPng(png);
-    const render::Rgba8Image reference = renderReference(scene, "panel-reference.png");
+    const app::Rgba8Image viewer = readPng(png);
+    const app::Rgba8Image reference = renderReference(scene, "panel-reference.png");
     ASSERT_EQ(viewer.width, 640u);
     // The panel covers the top-left corner; the rest of the window is crowd-render's picture.
     const double matching = test::fractionOfMatchingPixels(viewer, reference, 2);
@@ -322,12 +322,12 @@ TEST(ViewerProgram, ResizedWindowRendersAtItsNewSizeAndEscapeCloses) {
                           << "wait $pid\n";
     const test::ProgramResult r = test::runProgram(xvfbRun() + "sh", script);
     expectCleanRun(r);
-    const render::Rgba8Image viewer = readPng(png);
+    const app::Rgba8Image viewer = readPng(png);
     ASSERT_EQ(viewer.width, 240u) << r.out;
     ASSERT_EQ(viewer.height, 100u);
     // Real time, so poses differ from crowd-render's; the ground, sky and framing do not (the camera
     // stays put on resize, and frameCrowd frames both shapes alike).
-    const render::Rgba8Image reference =
+    const app::Rgba8Image reference =
         renderReference("--count 4 --frames 1 --size 240x100", "resized-reference.png");
     const double matching = test::fractionOfMatchingPixels(viewer, reference, 2);
     EXPECT_GT(matching, 0.90);
@@ -371,7 +371,7 @@ TEST(ViewerProgram, WindowLargerThanTheDeviceCanPresentIsShrunkWithValidationSil
                           << "wait $pid\n";
     const test::ProgramResult r = test::runProgram(xvfbRun() + "sh", script);
     expectCleanRun(r);
-    const render::Rgba8Image viewer = readPng(png);
+    const app::Rgba8Image viewer = readPng(png);
     // Two ways to shrink, both correct: the window's size limits (set from the device's largest extent)
     // make the X server refuse the height outright, or, when the resize arrives before they take hold,
     // the viewer sees 17,000 rows, notes "a 100x17000 window is larger than ..." and shrinks the window

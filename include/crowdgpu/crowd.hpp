@@ -30,7 +30,12 @@ struct Character {
     float tint[3] = {1.0f, 1.0f, 1.0f};  // linear colour multiplier
 };
 
+// The most models one crowd mixes (the renderer's per-model tables are this long).
+inline constexpr std::uint32_t kMaxCrowdModels = 16;
+
 enum class Behaviour { InPlace, March, Mill };
+// "in-place", "march", "mill": for reports and menus.
+const char* behaviourName(Behaviour behaviour);
 
 // A square grid centred on the origin, with seeded jitter of position, heading, phase, speed and tint.
 struct GridLayout {
@@ -42,6 +47,7 @@ struct GridLayout {
     bool formation = false;      // an exact grid in step (marching)
     float scaleVariation = 0.0f; // each character's scale varies by up to this fraction either way
     float tintVariation = 0.0f;  // and each tint channel by up to this one
+    std::vector<float> scales;   // per model: a scale for all its characters (empty or missing: 1)
 };
 
 // Where a character is and what it plays at a time.
@@ -77,6 +83,15 @@ public:
     // Cost: the characters whose plan ran out (none for an in-place crowd).
     void advanceTo(float time);
     CharacterState stateAt(std::uint32_t character, float time) const;
+    // The character as it entered the crowd (its home position, model, scale, ...).
+    Character character(std::uint32_t character) const;
+    // Every character's skinning matrices at `time` (after advanceTo), on the CPU: 12 floats per joint
+    // (the three rows of a 3x4 matrix), characters in order, each its model's jointCount() joints;
+    // `rows` is resized to 12 x paletteJoints(). On every core (`allCores`) or the calling thread
+    // only. About 50 ns per joint per core. The renderer's GPU path does the same on the GPU.
+    void computePalettes(float time, std::vector<float>& rows, bool allCores = true) const;
+    std::uint64_t paletteJoints() const;
+
     // The ground the crowd stands on: centre (x, y, z) and radius in metres; its tallest model's height.
     void bounds(float center[3], float& radius, float& tallest) const;
 
@@ -88,5 +103,10 @@ public:
 private:
     std::unique_ptr<detail::CrowdData> data_;
 };
+
+// Host bytes a crowd of `characters` of these models takes (its state, plans and the renderer's
+// per-character records; with `cpuPalettes`, the CPU animation's matrices too). Errs high: compare
+// it with the memory available before building a very large crowd.
+std::uint64_t hostBytesNeeded(const std::vector<Model>& models, std::uint64_t characters, bool cpuPalettes);
 
 }  // namespace crowdgpu

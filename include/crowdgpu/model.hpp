@@ -32,11 +32,28 @@ public:
     float height() const;  // metres (glTF units), rest pose
     std::uint32_t lodCount() const;
     std::uint32_t lodTriangles(std::uint32_t lod) const;
+    std::uint32_t lodVertices(std::uint32_t lod) const;
+    // The sphere that bounds every pose of every clip (what culling and LOD test), in model space.
+    void poseSphere(float center[3], float& radius) const;
     std::uint32_t clipCount() const;
     const std::string& clipName(std::uint32_t clip) const;
     float clipDuration(std::uint32_t clip) const;  // seconds
     // The clip of this name, or -1.
     std::int32_t findClip(const std::string& name) const;
+    // The clip a character plays when none is named: "walk" when the model has one, else the first.
+    std::uint32_t defaultClip() const;
+
+    // The full-detail mesh's triangles: three vertex indices each, into pose()'s vertices.
+    const std::vector<std::uint32_t>& indices() const;
+    // One character's skinned vertices at `time` seconds into `clip`, standing at the origin: the
+    // model's own space (for glTF, its scene's world space). A clip past the last gives the rest pose.
+    // Computed on the CPU in double precision, one vertex at a time (the GPU methods' reference):
+    // for exporting a pose, picking or physics, not for every character every frame.
+    struct PosedVertex {
+        double position[3];
+        double normal[3];  // unit length
+    };
+    std::vector<PosedVertex> pose(std::uint32_t clip, float time) const;
     // What loading left out or changed (a glTF feature the library does not use), one line each.
     const std::vector<std::string>& notes() const;
 

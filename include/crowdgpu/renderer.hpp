@@ -24,6 +24,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,11 +64,22 @@ struct Device {
     const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
 };
 
+class Renderer;
+
+// The colour the ground and far characters fade into with distance (linear RGB): a host that clears
+// its target to it gets a seamless horizon.
+inline constexpr float kHorizonColor[3] = {0.55f, 0.7f, 0.9f};
+
 // ---- Settings ----
 
 enum class Method { TwoPass, TwoPassDirect, VertexShader, VertexShaderInstanced, Compute, Static };
 enum class Animation { Gpu, Cpu };
 enum class Culling { Gpu, Cpu, Off };
+// Names for reports and menus: "two-pass", "two-pass-direct", "vs", "vs-instanced", "compute",
+// "static"; "gpu", "cpu"; "gpu", "cpu", "off".
+const char* methodName(Method method);
+const char* animationName(Animation animation);
+const char* cullingName(Culling culling);
 
 // The host's colour pass.
 struct TargetFormat {
@@ -90,6 +102,9 @@ struct RendererSettings {
     bool shadows = true;
     std::uint32_t shadowMapSize = 2048;
     std::uint32_t framesInFlight = 2;
+    // A renderer of the same models in the same order whose baked impostor atlas this one shares
+    // instead of baking its own (it must have completed setup); null: bake when impostors turn on.
+    const Renderer* impostorsFrom = nullptr;
 };
 
 // One frame's view: column-major 4x4 matrices as glm and Vulkan use them (m[column * 4 + row]).
@@ -115,6 +130,7 @@ struct FrameCounts {
     std::uint64_t triangles[3];
     std::uint32_t impostors;
     std::uint32_t demoted;  // impostors only because the mesh capacity was full
+    std::uint64_t skinnedVertices;  // what the skinning pass skinned: visible characters x their LOD's vertices
 };
 
 // This frame's skinned characters, for the host's own passes (G-buffer, outline, picking): bind
@@ -144,6 +160,17 @@ using PassObserver = std::function<void(VkCommandBuffer cmd, const char* pass)>;
 // Device bytes a renderer with these settings takes for this crowd: the sum of what the renderer's
 // constructor allocates, from the same planner. Compare with the device's heap before creating one.
 std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings);
+
+// Whether the device's limits allow this crowd with these settings: the most characters of the
+// crowd's mix (same models, same shares) whose storage-buffer bindings fit maxStorageBufferRange,
+// and, when this crowd is over it, the first binding past it in one line (the constructor refuses
+// with the same words). `meshCapacityBound`: that binding is sized by settings.meshCapacity.
+struct DeviceLimitCheck {
+    std::uint64_t mostCharacters = 0;
+    std::string problem;  // empty: fits
+    bool meshCapacityBound = false;
+};
+DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings);
 
 class Renderer {
 public:
@@ -175,10 +202,22 @@ public:
     void setCulling(Culling culling, bool lod);
     void setImpostors(bool on);
     void setAnimation(Animation animation);
+    // Pixel thresholds of the levels of detail and the impostors (as in RendererSettings).
+    void setLevels(const float lodThresholds[2], float lodHysteresis, float impostorThreshold);
     const RendererSettings& settings() const;
 
     // Device memory by resource, as allocated.
     std::vector<MemoryItem> memory() const;
+    // The same bytes divided by the crowd's size, by what they are for: "state" (records, motion, LOD
+    // state, lists), "bones", "mesh slots" (skinned vertices and draw lists), "atlas", "fixed" (the
+    // geometry, clips and shadow map).
+    std::map<std::string, double> memoryPerCharacter() const;
+    // Whether recordCompute animates on the CPU (settings.animation == Cpu, or a method that needs
+    // CPU palettes): the host's recordCompute call then costs the CPU animation of the crowd.
+    bool animatesOnCpu() const;
+    // Host milliseconds the impostor atlas's construction took (planning and recording its bake); 0
+    // without one.
+    double impostorBakeMs() const;
 
     // The library's side (opaque to hosts).
     explicit Renderer(std::unique_ptr<detail::RendererData> data);

@@ -3,6 +3,7 @@
 // errors become crowdgpu::Error.
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,10 @@ struct ModelData {
 
 struct CrowdData {
     std::vector<Model> models;  // keep the internal crowd's models alive
-    crowd::Crowd crowd;
+    std::optional<crowd::Crowd> owned;
+    crowd::Crowd* borrowed = nullptr;  // an internal crowd somebody else keeps (the library's tests)
+    crowd::Crowd& crowd() { return borrowed ? *borrowed : *owned; }
+    const crowd::Crowd& crowd() const { return borrowed ? *borrowed : *owned; }
 };
 
 // Runs `f`, turning the library's internal failures into crowdgpu::Error with the same message.

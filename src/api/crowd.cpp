@@ -2,6 +2,10 @@
 #include "crowdgpu/crowd.hpp"
 
 #include "api/api_data.h"
+#include "crowd/host_memory.h"
+#include "crowd/worker_pool.h"
+
+static_assert(crowdgpu::kMaxCrowdModels == MAX_MODELS, "the public limit is the shaders' table size");
 
 namespace crowdgpu {
 namespace detail {
@@ -43,7 +47,7 @@ std::unique_ptr<detail::CrowdData> makeData(std::vector<Model> models, std::vect
     return detail::translated([&] {
         const std::vector<const model::SkinnedModel*> pointers = detail::internalModels(models);
         return std::unique_ptr<detail::CrowdData>(new detail::CrowdData{
-            std::move(models), crowd::Crowd(pointers, std::move(characters), behaviourOf(behaviour, seed))});
+            std::move(models), crowd::Crowd(pointers, std::move(characters), behaviourOf(behaviour, seed)), nullptr});
     });
 }
 
@@ -69,6 +73,7 @@ Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour
     options.formation = layout.formation;
     options.scaleVariation = layout.scaleVariation;
     options.tintVariation = layout.tintVariation;
+    options.scales = layout.scales;
     std::vector<crowd::Character> characters = detail::translated(
         [&] { return crowd::gridLayout(detail::internalModels(models), options); });
     return Crowd(makeData(std::move(models), std::move(characters), behaviour, layout.seed));
@@ -78,38 +83,84 @@ Crowd::~Crowd() = default;
 Crowd::Crowd(Crowd&&) noexcept = default;
 Crowd& Crowd::operator=(Crowd&&) noexcept = default;
 
-std::uint32_t Crowd::size() const { return data_->crowd.size(); }
+std::uint32_t Crowd::size() const { return data_->crowd().size(); }
 const std::vector<Model>& Crowd::models() const { return data_->models; }
 
 std::uint32_t Crowd::spawn(const Character& character) {
-    return detail::translated([&] { return data_->crowd.spawn(toInternal(character)); });
+    return detail::translated([&] { return data_->crowd().spawn(toInternal(character)); });
 }
 
 void Crowd::moveTo(std::uint32_t character, float x, float z, float at, std::int32_t gait, float rate) {
-    detail::translated([&] { data_->crowd.moveTo(character, glm::vec2(x, z), at, gait, rate); });
+    detail::translated([&] { data_->crowd().moveTo(character, glm::vec2(x, z), at, gait, rate); });
 }
 
 void Crowd::play(std::uint32_t character, std::int32_t clip, float at, float fade, float rate) {
-    detail::translated([&] { data_->crowd.play(character, clip, at, fade, rate); });
+    detail::translated([&] { data_->crowd().play(character, clip, at, fade, rate); });
 }
 
 void Crowd::advanceTo(float time) {
-    detail::translated([&] { data_->crowd.advanceTo(time); });
+    detail::translated([&] { data_->crowd().advanceTo(time); });
 }
 
 CharacterState Crowd::stateAt(std::uint32_t character, float time) const {
     if (character >= size())
         throw Error(ErrorCode::InvalidArgument, "no character " + std::to_string(character) + " in a crowd of " +
                                                     std::to_string(size()));
-    const crowd::MotionState s = data_->crowd.stateAt(character, time);
+    const crowd::MotionState s = data_->crowd().stateAt(character, time);
     return {{s.position.x, s.position.y, s.position.z}, s.heading, s.clipFrom, s.clipTo, s.weight, s.phase};
 }
 
+std::uint64_t Crowd::paletteJoints() const {
+    std::uint64_t joints = 0;
+    for (const crowd::Character& c : data_->crowd().characters()) joints += data_->crowd().library().jointCount(c.model);
+    return joints;
+}
+
+void Crowd::computePalettes(float time, std::vector<float>& rows, bool allCores) const {
+    detail::translated([&] {
+        const crowd::Crowd& crowd = data_->crowd();
+        std::vector<std::uint32_t> offsets(crowd.size());
+        std::uint64_t joints = 0;
+        for (std::uint32_t c = 0; c < crowd.size(); ++c)
+            offsets[c] = static_cast<std::uint32_t>(joints), joints += crowd.library().jointCount(crowd.characters()[c].model);
+        static_assert(sizeof(gpu::BoneRows) == 12 * sizeof(float));
+        rows.resize(joints * 12);
+        const std::span<gpu::BoneRows> bones(reinterpret_cast<gpu::BoneRows*>(rows.data()), joints);
+        static crowd::WorkerPool callingThread(1);  // no workers: the caller does every chunk
+        crowd.animate(time, bones, offsets, {}, allCores ? &crowd::WorkerPool::shared() : &callingThread);
+    });
+}
+
+std::uint64_t hostBytesNeeded(const std::vector<Model>& models, std::uint64_t characters, bool cpuPalettes) {
+    return crowd::estimateHostBytes(detail::internalModels(models), characters, cpuPalettes);
+}
+
+const char* behaviourName(Behaviour behaviour) {
+    return crowd::behaviourName(behaviour == Behaviour::March ? crowd::Behaviour::March
+                                : behaviour == Behaviour::Mill ? crowd::Behaviour::Mill
+                                                               : crowd::Behaviour::InPlace);
+}
+
+Character Crowd::character(std::uint32_t character) const {
+    stateAt(character, 0.0f);  // checks the index
+    const crowd::Character& c = data_->crowd().characters()[character];
+    Character result;
+    result.model = c.model;
+    result.clip = c.clip;
+    result.phase = c.timeOffset;
+    result.speed = c.speed;
+    result.position[0] = c.position.x, result.position[1] = c.position.y, result.position[2] = c.position.z;
+    result.heading = c.heading;
+    result.scale = c.scale;
+    result.tint[0] = c.tint.x, result.tint[1] = c.tint.y, result.tint[2] = c.tint.z;
+    return result;
+}
+
 void Crowd::bounds(float center[3], float& radius, float& tallest) const {
-    const glm::vec3 c = data_->crowd.center();
+    const glm::vec3 c = data_->crowd().center();
     center[0] = c.x, center[1] = c.y, center[2] = c.z;
-    radius = data_->crowd.radius();
-    tallest = data_->crowd.tallestHeight();
+    radius = data_->crowd().radius();
+    tallest = data_->crowd().tallestHeight();
 }
 
 }  // namespace crowdgpu

@@ -6,6 +6,7 @@
 #include "model/gltf_loader.h"
 #include "model/lod_builder.h"
 #include "model/procedural_models.h"
+#include "skin/cpu_skinning.h"
 
 namespace crowdgpu {
 namespace {
@@ -56,6 +57,17 @@ std::uint32_t Model::lodTriangles(std::uint32_t lod) const {
     return static_cast<std::uint32_t>(data_->model.lods[lod].indices.size() / 3);
 }
 
+std::uint32_t Model::lodVertices(std::uint32_t lod) const {
+    lodTriangles(lod);  // checks the index
+    return data_->model.lods[lod].vertexCount;
+}
+
+void Model::poseSphere(float center[3], float& radius) const {
+    const glm::vec4& sphere = data_->model.poseSphere;
+    center[0] = sphere.x, center[1] = sphere.y, center[2] = sphere.z;
+    radius = sphere.w;
+}
+
 std::uint32_t Model::clipCount() const { return static_cast<std::uint32_t>(data_->model.clips.size()); }
 
 const std::string& Model::clipName(std::uint32_t clip) const {
@@ -71,5 +83,17 @@ float Model::clipDuration(std::uint32_t clip) const {
 
 std::int32_t Model::findClip(const std::string& clipName) const { return data_->model.findClip(clipName); }
 const std::vector<std::string>& Model::notes() const { return data_->notes; }
+std::uint32_t Model::defaultClip() const { return crowd::defaultClip(data_->model); }
+const std::vector<std::uint32_t>& Model::indices() const { return data_->model.indices; }
+
+std::vector<Model::PosedVertex> Model::pose(std::uint32_t clip, float time) const {
+    return detail::translated([&] {
+        std::vector<PosedVertex> result;
+        result.reserve(data_->model.vertices.size());
+        for (const skin::CpuSkinnedVertex& v : skin::poseOnCpu(data_->model, clip, time))
+            result.push_back({{v.position.x, v.position.y, v.position.z}, {v.normal.x, v.normal.y, v.normal.z}});
+        return result;
+    });
+}
 
 }  // namespace crowdgpu

@@ -11,6 +11,12 @@
 #include "api/renderer_data.h"
 #include "frame/memory_plan.h"
 #include "gpu/buffer.h"
+#include "render/scene_pass.h"
+#include "skin/storage_ranges.h"
+
+static_assert(crowdgpu::kHorizonColor[0] == render::kSkyColor.x && crowdgpu::kHorizonColor[1] == render::kSkyColor.y &&
+                  crowdgpu::kHorizonColor[2] == render::kSkyColor.z,
+              "the public horizon colour is the fog's");
 
 namespace crowdgpu {
 namespace detail {
@@ -97,7 +103,30 @@ FrameView lookAt(const float eye[3], const float target[3], float verticalFov, f
 std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {
     return detail::translated([&] {
         const gpu::VulkanContext limits(gpu::BorrowedHandles{VK_NULL_HANDLE, physicalDevice, VK_NULL_HANDLE, 0, true});
-        return frame::planMemory(limits, crowd.data().crowd, detail::rendererOptions(settings)).total();
+        return frame::planMemory(limits, crowd.data().crowd(), detail::rendererOptions(settings)).total();
+    });
+}
+
+const char* methodName(Method method) { return skin::methodName(detail::internalMethod(method)); }
+const char* animationName(Animation animation) {
+    return render::animationPathName(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
+}
+const char* cullingName(Culling culling) { return render::cullModeName(detail::cullSettings({.culling = culling}).mode); }
+
+DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {
+    return detail::translated([&] {
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(physicalDevice, &properties);
+        const frame::RecorderOptions options = detail::rendererOptions(settings);
+        const crowd::Crowd& internal = crowd.data().crowd();
+        const std::uint32_t capacity = frame::meshCapacityInEffect(options, internal);
+        DeviceLimitCheck check;
+        check.mostCharacters = skin::maxCharactersInStorageRange(properties.limits, internal, options.method, capacity);
+        if (const auto problem = skin::storageRangeProblem(properties.limits, internal, options.method, capacity)) {
+            check.problem = problem->message;
+            check.meshCapacityBound = problem->meshCapacityBound;
+        }
+        return check;
     });
 }
 
@@ -118,6 +147,8 @@ Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::Re
                         "a crowd of " + std::to_string(crowd.size()) + " characters needs " + gpu::formatBytes(needed) +
                             " of device memory with these settings; " + data->context->description.name + " has " +
                             gpu::formatBytes(available));
+        skin::checkStorageRanges(data->context->properties.limits, crowd, options.method,
+                                 frame::meshCapacityInEffect(options, crowd));
         data->settings = settings;
         frame::RecorderOptions withOwner = options;
         withOwner.contextOwner = data->context;  // a shared atlas may outlive this renderer
@@ -130,8 +161,22 @@ Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::Re
 
 Renderer::Renderer(std::unique_ptr<detail::RendererData> data) : data_(std::move(data)) {}
 
+namespace {
+
+frame::RecorderOptions optionsWithSharedAtlas(const RendererSettings& settings) {
+    frame::RecorderOptions options = detail::rendererOptions(settings);
+    if (const Renderer* other = settings.impostorsFrom) {
+        options.atlas = other->data().frame->impostorAtlas();
+        if (!options.atlas)
+            throw Error(ErrorCode::WrongOrder, "impostorsFrom: that renderer has no baked impostor atlas yet");
+    }
+    return options;
+}
+
+}  // namespace
+
 Renderer::Renderer(const Device& device, Crowd& crowd, const RendererSettings& settings)
-    : Renderer(detail::makeRenderer(device, crowd.data().crowd, detail::rendererOptions(settings), settings)) {}
+    : Renderer(detail::makeRenderer(device, crowd.data().crowd(), optionsWithSharedAtlas(settings), settings)) {}
 
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
@@ -185,6 +230,7 @@ FrameCounts Renderer::counts(std::uint32_t slot) const {
     for (int l = 0; l < 3; ++l) result.characters[l] = c.characters[l], result.triangles[l] = c.triangles[l];
     result.impostors = c.impostors;
     result.demoted = c.demoted;
+    result.skinnedVertices = c.skinnedVertices;
     return result;
 }
 
@@ -222,7 +268,30 @@ void Renderer::setAnimation(Animation animation) {
     data_->settings.animation = animation;
 }
 
+void Renderer::setLevels(const float lodThresholds[2], float lodHysteresis, float impostorThreshold) {
+    RendererSettings s = data_->settings;
+    s.lodThresholds[0] = lodThresholds[0];
+    s.lodThresholds[1] = lodThresholds[1];
+    s.lodHysteresis = lodHysteresis;
+    s.impostorThreshold = impostorThreshold;
+    detail::rendererOptions(s);  // checks the values
+    detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
+    data_->settings = s;
+}
+
 const RendererSettings& Renderer::settings() const { return data_->settings; }
+
+std::map<std::string, double> Renderer::memoryPerCharacter() const { return data_->frame->memoryPerCharacter(); }
+
+bool Renderer::animatesOnCpu() const {
+    const skin::SkinningMethod& method = data_->frame->method();
+    return method.needsAnimation() && (method.fixedLayout() || data_->frame->animation() == render::AnimationPath::Cpu);
+}
+
+double Renderer::impostorBakeMs() const {
+    const auto atlas = data_->frame->impostorAtlas();
+    return atlas ? atlas->bakeMs() : 0.0;
+}
 
 std::vector<MemoryItem> Renderer::memory() const {
     std::vector<MemoryItem> items;

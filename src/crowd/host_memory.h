@@ -15,7 +15,4 @@ namespace crowd {
 std::uint64_t estimateHostBytes(std::span<const model::SkinnedModel* const> models, std::uint64_t characters,
                                 bool cpuPalettes);
 
-// Memory the kernel could give without swapping (Linux: MemAvailable), or 0 when unknown.
-std::uint64_t availableHostBytes();
-
 }  // namespace crowd

@@ -22,7 +22,7 @@
 #include "gpu/pass_observer.h"
 #include "render/animation_pass.h"
 #include "render/camera.h"
-#include "render/camera_path.h"
+#include "render/camera.h"
 #include "render/character_draw.h"
 #include "render/crowd_buffers.h"
 #include "render/cull_pass.h"
@@ -114,6 +114,7 @@ public:
     // The levels drawn in the slot's last frame: read once the host has waited for it.
     render::LodCounts countsOf(std::uint32_t slot) const { return lists_.countsOf(slot); }
     skin::SkinningMethod& method() { return *method_; }
+    const skin::SkinningMethod& method() const { return *method_; }
     const render::GeometryPool& pool() const { return pool_; }
     const render::CrowdBuffers& buffers() const { return buffers_; }
     const render::DrawLists& drawLists() const { return lists_; }

@@ -56,7 +56,7 @@ VkDeviceMemory allocateMemory(const VulkanContext& context, const VkMemoryRequir
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
         throw Error(std::string(result == VK_ERROR_OUT_OF_DEVICE_MEMORY ? "out of device memory" : "out of host memory") +
                     " allocating " + formatBytes(requirements.size) + " for " + what +
-                    " (try a smaller --count or --size)");
+                    " (fewer characters or a smaller target need less)");
     VK_CHECK(result);
     return memory;
 }

@@ -28,7 +28,7 @@ namespace {
 const char* hintFor(VkResult result) {
     switch (result) {
         case VK_ERROR_OUT_OF_DEVICE_MEMORY:
-        case VK_ERROR_OUT_OF_HOST_MEMORY: return " (try a smaller --count or --size)";
+        case VK_ERROR_OUT_OF_HOST_MEMORY: return " (fewer characters or a smaller target need less)";
         case VK_ERROR_INCOMPATIBLE_DRIVER:
         case VK_ERROR_INITIALIZATION_FAILED:
             return " (no usable Vulkan driver: install mesa-vulkan-drivers or a GPU driver)";

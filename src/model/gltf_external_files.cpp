@@ -93,7 +93,7 @@ std::optional<std::filesystem::path> ExternalFiles::resolve(const std::string& p
     const std::filesystem::path resolved = std::filesystem::weakly_canonical(baseDir_ / uri, error);
     if (error) return std::nullopt;  // tinygltf: "File not found"
     if (!within(resolved, root_))
-        return refuse(rootIsModelFolder_ ? "leads outside the model's folder (--asset-root DIR allows a wider one)"
+        return refuse(rootIsModelFolder_ ? "leads outside the model's folder (a wider asset root, the assetRoot argument, allows it)"
                                          : "leads outside the asset root");
     // Regular files only: a FIFO or a device named by a URI would block or never end.
     if (!std::filesystem::is_regular_file(resolved, error)) return std::nullopt;

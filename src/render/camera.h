@@ -1,5 +1,5 @@
 #pragma once
-// A perspective camera looking at a point.
+// A perspective camera looking at a point, and the crowd it looks at.
 #include <glm/glm.hpp>
 
 namespace render {
@@ -17,7 +17,11 @@ struct Camera {
     glm::mat4 viewProjection(float aspect) const { return projection(aspect) * view(); }
 };
 
-// A camera in front of (+z) and above a crowd of this centre and radius, framing all of it.
-Camera frameCrowd(const glm::vec3& center, float radius, float characterHeight, float aspect);
+// Where a crowd stands and how big its characters are (the shadow map's fit).
+struct CrowdShape {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+    float characterHeight = 1.0f;
+};
 
 }  // namespace render

@@ -10,7 +10,7 @@
 
 #include "gpu/image.h"
 #include "render/camera.h"
-#include "render/camera_path.h"
+#include "render/camera.h"
 
 namespace gpu { class VulkanContext; }
 

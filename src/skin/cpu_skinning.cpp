@@ -1,5 +1,9 @@
 #include "skin/cpu_skinning.h"
 
+#include "anim/local_to_model.h"
+#include "anim/sample_clip.h"
+#include "anim/skinning_matrices.h"
+
 #include <cmath>
 
 namespace skin {
@@ -38,6 +42,17 @@ std::vector<CpuSkinnedVertex> skinOnCpu(const model::SkinnedModel& model, std::s
         out[i] = {position, unitNormal(normal, glm::dvec3(v.normal))};
     }
     return out;
+}
+
+std::vector<CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, std::uint32_t clip, float time) {
+    const anim::Skeleton& skeleton = model.skeleton;
+    std::vector<anim::Transform> locals(skeleton.restPose);
+    if (clip < model.clips.size()) anim::sampleClip(model.clips[clip], time, skeleton.restPose, locals);
+    std::vector<glm::mat4> modelSpace(skeleton.jointCount());
+    anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, modelSpace);
+    std::vector<gpu::BoneRows> bones(skeleton.jointCount());
+    anim::skinningMatrices(modelSpace, skeleton.inverseBind, glm::mat4(1.0f), bones);
+    return skinOnCpu(model, bones);
 }
 
 }  // namespace skin

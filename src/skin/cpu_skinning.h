@@ -19,4 +19,9 @@ struct CpuSkinnedVertex {
 // Skins every vertex of `model` with one character's bones (bones[joint], as the GPU receives them).
 std::vector<CpuSkinnedVertex> skinOnCpu(const model::SkinnedModel& model, std::span<const gpu::BoneRows> bones);
 
+// One character's skinned vertices at `time` seconds into `clip`, standing at the origin (character
+// transform = identity): the model's own space. A clip index past the last gives the rest pose. The
+// CPU jobs only: sample, local to model (with the skeleton's root transform), skinning matrices, skin.
+std::vector<CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, std::uint32_t clip, float time);
+
 }  // namespace skin

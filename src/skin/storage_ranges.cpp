@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "gpu/buffer.h"
 #include "gpu/vulkan_error.h"
@@ -42,21 +43,29 @@ std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits
     return bindings;
 }
 
-void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
-                        std::uint32_t meshCapacity) {
+std::optional<StorageRangeProblem> storageRangeProblem(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                                                       Method method, std::uint32_t meshCapacity) {
     const std::uint64_t range = limits.maxStorageBufferRange;
     for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity)) {
         if (b.bytes <= range) continue;
         const std::uint64_t fitting = charactersFitting(b, range);
         const bool capped = b.capacityCap > 0 && b.holds == b.capacityCap;
-        const std::string advice = capped ? "a --mesh-capacity of at most " + std::to_string(fitting) + " fits"
+        const std::string advice = capped ? "a mesh capacity of at most " + std::to_string(fitting) + " fits"
                                           : "at most " + std::to_string(fitting) + " of these characters fit" +
-                                                (b.capacityCap > 0 ? ", or a --mesh-capacity of that many" : "");
-        const std::string flag = capped ? "--mesh-capacity " + std::to_string(b.capacityCap) : "--count " + std::to_string(crowd.size());
-        throw gpu::Error(flag + ": " + methodName(method) + " binds " +
-                         gpu::formatBytes(b.bytes) + " of " + b.what + " as one storage buffer, over this device's " +
-                         "limit of " + gpu::formatBytes(range) + " (" + advice + ")");
+                                                (b.capacityCap > 0 ? ", or a mesh capacity of that many" : "");
+        return StorageRangeProblem{std::string(methodName(method)) + " binds " + gpu::formatBytes(b.bytes) + " of " +
+                                       b.what + " as one storage buffer, over this device's limit of " +
+                                       gpu::formatBytes(range) + " (" + advice + ")",
+                                   capped};
     }
+    return std::nullopt;
+}
+
+void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
+                        std::uint32_t meshCapacity) {
+    if (const auto problem = storageRangeProblem(limits, crowd, method, meshCapacity))
+        throw gpu::Error("a crowd of " + std::to_string(crowd.size()) + " characters: " + problem->message,
+                         gpu::ErrorKind::Unsupported);
 }
 
 std::uint64_t maxCharactersInStorageRange(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,

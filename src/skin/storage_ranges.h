@@ -3,6 +3,7 @@
 // (128 MiB on lavapipe, 2 or 4 GiB on desktop GPUs): a binding past it is invalid Vulkan, so a crowd
 // that needs one is refused before anything is allocated, and the viewer offers no such crowd.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,16 @@ struct StorageBinding {
 std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
                                             Method method, std::uint32_t meshCapacity);
 
-// Throws a one-line gpu::Error naming the first binding over the range, its size, the limit and how
-// many characters of this crowd's mix would fit.
+// The first binding over the range, in one line: its size, the limit and how many characters of this
+// crowd's mix (or what mesh capacity) would fit. `meshCapacityBound`: the binding is sized by the mesh
+// capacity, not the crowd, so a smaller capacity is the way out.
+struct StorageRangeProblem {
+    std::string message;
+    bool meshCapacityBound = false;
+};
+std::optional<StorageRangeProblem> storageRangeProblem(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                                                       Method method, std::uint32_t meshCapacity);
+// Throws gpu::Error(Unsupported) with "a crowd of N characters: " and the problem's message.
 void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
                         std::uint32_t meshCapacity);
 

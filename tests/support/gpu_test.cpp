@@ -5,23 +5,154 @@
 #include <cstring>
 #include <filesystem>
 
+#include "api/api_data.h"
+#include "api/renderer_data.h"
+#include "app/crowd_app.h"
 #include "gpu/buffer.h"
 #include "gpu/one_shot_commands.h"
 #include "render/camera.h"
+#include "render/frame_view.h"
 
 namespace test {
 
-void GpuTest::SetUp() {
-    // Tests pick the device like users do; CI has only lavapipe.
-    const char* device = std::getenv("CROWD_TEST_DEVICE");
-    context = std::make_unique<gpu::VulkanContext>(gpu::ContextOptions{true, device ? device : "", {}, false});
+namespace {
+
+// Which device each live test's context views: helpers given only the context reach the device.
+std::map<const gpu::VulkanContext*, const app::HostDevice*>& hosts() {
+    static std::map<const gpu::VulkanContext*, const app::HostDevice*> map;
+    return map;
 }
 
+}  // namespace
+
+const app::HostDevice& hostOf(const gpu::VulkanContext& context) { return *hosts().at(&context); }
+
+void GpuTest::SetUp() {
+    // Tests pick the device like users do; CI has only lavapipe.
+    const char* selector = std::getenv("CROWD_TEST_DEVICE");
+    this->device = std::make_unique<app::HostDevice>(app::HostDeviceOptions{true, selector ? selector : "", {}, false});
+    VkPhysicalDeviceFeatures features;
+    vkGetPhysicalDeviceFeatures(this->device->physicalDevice, &features);
+    context = std::make_unique<gpu::VulkanContext>(gpu::BorrowedHandles{
+        this->device->instance, this->device->physicalDevice, this->device->device, this->device->queueFamily,
+        features.fragmentStoresAndAtomics == VK_TRUE, this->device->queue, true});
+    hosts()[context.get()] = this->device.get();
+}
+
+
 void GpuTest::TearDown() {
-    ASSERT_TRUE(context);
-    const std::uint64_t messages = context->validationMessages();
-    context.reset();  // object destruction is validated too
-    EXPECT_EQ(messages, 0u) << "validation reported messages (printed above)";
+    ASSERT_TRUE(device);
+    hosts().erase(context.get());
+    context.reset();
+    if (device->device) vkDeviceWaitIdle(device->device);
+    const std::uint64_t before = device->validationMessages();
+    device.reset();  // object destruction is validated too (counted before the messenger goes)
+    EXPECT_EQ(before, 0u) << "validation reported messages (printed above)";
+}
+
+crowdgpu::Crowd borrowCrowd(crowd::Crowd& crowd) {
+    auto data = std::make_unique<crowdgpu::detail::CrowdData>();
+    data->borrowed = &crowd;
+    return crowdgpu::Crowd(std::move(data));
+}
+
+namespace {
+
+crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Crowd& crowd, const RendererOptions& options) {
+    // The public settings the renderer reports: the internal options' values.
+    crowdgpu::RendererSettings settings;
+    settings.target = {options.target.color, options.target.depth, options.target.samples};
+    settings.method = publicMethod(options.method);
+    settings.animation = options.animation == render::AnimationPath::Cpu ? crowdgpu::Animation::Cpu : crowdgpu::Animation::Gpu;
+    settings.culling = options.cull.mode == render::CullMode::Cpu   ? crowdgpu::Culling::Cpu
+                       : options.cull.mode == render::CullMode::Off ? crowdgpu::Culling::Off
+                                                                    : crowdgpu::Culling::Gpu;
+    settings.lod = options.cull.lod;
+    settings.lodThresholds[0] = options.cull.lodThresholds[0];
+    settings.lodThresholds[1] = options.cull.lodThresholds[1];
+    settings.lodHysteresis = options.cull.hysteresis;
+    settings.impostors = options.cull.impostors;
+    settings.impostorThreshold = options.cull.impostorThreshold;
+    settings.meshCapacity = options.meshCapacity;
+    settings.framesInFlight = options.framesInFlight;
+    settings.shadows = options.shadows;
+    settings.shadowMapSize = options.shadowMapSize;
+    return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
+}
+
+}  // namespace
+
+TestRenderer::TestRenderer(const app::HostDevice& device, crowd::Crowd& crowd, const RendererOptions& options)
+    : BorrowedCrowd(crowd),
+      app::CrowdRenderer(device, publicCrowd, makeLibraryRenderer(device, crowd, options), options.size,
+                         options.passClock) {}
+
+frame::CrowdRecorder& TestRenderer::recorder() const { return *library().data().frame; }
+
+TestRenderer::TestRenderer(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RendererOptions& options)
+    : TestRenderer(hostOf(context), crowd, options) {}
+
+void TestRenderer::setCull(const render::CullSettings& cull) {
+    const auto culling = cull.mode == render::CullMode::Cpu ? crowdgpu::Culling::Cpu
+                         : cull.mode == render::CullMode::Off ? crowdgpu::Culling::Off
+                                                              : crowdgpu::Culling::Gpu;
+    setCulling(culling, cull.lod, cull.impostors);
+    setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
+}
+
+gpu::CullUniforms TestRenderer::cullUniforms() const {
+    return recorder().cullUniforms(render::frameViewOf(internalCamera(camera), extent(), 0.0f));
+}
+
+std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const app::SceneOptions& scene) {
+    crowd::LayoutOptions layout;
+    layout.count = scene.count;
+    layout.seed = scene.seed;
+    layout.randomClips = scene.clip == "random";
+    const int clip = scene.clip.empty() || layout.randomClips ? -1 : model.findClip(scene.clip);
+    layout.clips = {clip};
+    const model::SkinnedModel* models[1] = {&model};
+    return crowd::gridLayout(models, layout);
+}
+
+app::CrowdShape shapeOf(const crowd::Crowd& crowd) { return {crowd.center(), crowd.radius(), crowd.tallestHeight()}; }
+
+app::Camera appCamera(const render::Camera& camera) {
+    return {camera.eye, camera.target, camera.verticalFov, camera.nearPlane, camera.farPlane};
+}
+
+render::Camera internalCamera(const app::Camera& camera) {
+    render::Camera internal;
+    internal.eye = camera.eye;
+    internal.target = camera.target;
+    internal.verticalFov = camera.verticalFov;
+    internal.nearPlane = camera.nearPlane;
+    internal.farPlane = camera.farPlane;
+    return internal;
+}
+
+render::LodCounts internalCounts(const crowdgpu::FrameCounts& counts) {
+    render::LodCounts result;
+    for (int l = 0; l < 3; ++l) result.characters[l] = counts.characters[l], result.triangles[l] = counts.triangles[l];
+    result.skinnedVertices = counts.skinnedVertices;
+    result.impostors = counts.impostors;
+    result.demoted = counts.demoted;
+    return result;
+}
+
+std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& clip) {
+    crowdgpu::Model wrapped(std::make_shared<const crowdgpu::detail::ModelData>(crowdgpu::detail::ModelData{model, {}}));
+    return app::clipIndex(wrapped, clip);
+}
+
+crowdgpu::Method publicMethod(skin::Method method) {
+    for (crowdgpu::Method m : app::allMethods())
+        if (crowdgpu::detail::internalMethod(m) == method) return m;
+    return crowdgpu::Method::TwoPass;
+}
+
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed) {
+    return app::loadModel(name, seed).data()->model;
 }
 
 ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const render::SkinnedVertices& vertices,
@@ -55,7 +186,7 @@ std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::
 }
 
 std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
-                                                     const app::CrowdRenderer& renderer) {
+                                                     const TestRenderer& renderer) {
     const render::DrawLists& lists = renderer.drawLists();
     const std::vector<std::byte> totalsBytes = readBuffer(context, lists.totals());
     const std::vector<std::byte> drawBytes = readBuffer(context, lists.draws());
@@ -75,7 +206,7 @@ std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& c
     return drawn;
 }
 
-ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, app::CrowdRenderer& renderer,
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, TestRenderer& renderer,
                                       std::uint32_t character) {
     const std::map<std::uint32_t, DrawnCharacter> drawn = readDrawList(context, renderer);
     const DrawnCharacter& d = drawn.at(character);
@@ -84,20 +215,20 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, app::Cr
 
 namespace {
 
-render::Rgba8Image renderCrowd(const gpu::VulkanContext& context, crowd::Crowd crowd, const render::Camera& camera) {
-    app::RendererOptions options;
+app::Rgba8Image renderCrowd(const app::HostDevice& device, crowd::Crowd crowd, const app::Camera& camera) {
+    RendererOptions options;
     options.size = {192, 108};
     options.method = skin::Method::Compute;
     // Each model's own crowd lacks the other's shadows (and frames its light differently): compare
     // the characters themselves.
     options.shadows = false;
-    app::CrowdRenderer renderer(context, crowd, options);
+    TestRenderer renderer(device, crowd, options);
     renderer.camera = camera;
     renderer.renderFrame(1.25f);
     return renderer.readback();
 }
 
-glm::ivec4 pixelAt(const render::Rgba8Image& image, std::size_t p) {
+glm::ivec4 pixelAt(const app::Rgba8Image& image, std::size_t p) {
     return glm::ivec4(image.pixels[p], image.pixels[p + 1], image.pixels[p + 2], image.pixels[p + 3]);
 }
 
@@ -105,7 +236,7 @@ bool samePixel(glm::ivec4 x, glm::ivec4 y) { return glm::all(glm::lessThanEqual(
 
 }  // namespace
 
-MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model::SkinnedModel& a,
+MixedCrowdMatch compareMixedCrowd(const app::HostDevice& context, const model::SkinnedModel& a,
                                   const model::SkinnedModel& b, float scaleB, const std::string& name) {
     // A row of alternating characters, far enough apart that none overlaps another on screen.
     std::vector<crowd::Character> mixed;
@@ -126,15 +257,15 @@ MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model
             if (c.model == model) c.model = 0, subset.push_back(c);
         return subset;
     };
-    render::Camera camera;
+    app::Camera camera;
     camera.eye = {0.0f, 4.0f, 12.0f};
     camera.target = {0.0f, 0.8f, 0.0f};
     crowd::Character away;  // one character behind the camera: culled, so the picture is the empty scene
     away.position = {0.0f, 0.0f, 100.0f};
-    const render::Rgba8Image both = renderCrowd(context, crowd::Crowd({&a, &b}, mixed), camera);
-    const render::Rgba8Image first = renderCrowd(context, crowd::Crowd(a, only(0)), camera);
-    const render::Rgba8Image second = renderCrowd(context, crowd::Crowd(b, only(1)), camera);
-    const render::Rgba8Image empty = renderCrowd(context, crowd::Crowd(a, {away}), camera);
+    const app::Rgba8Image both = renderCrowd(context, crowd::Crowd({&a, &b}, mixed), camera);
+    const app::Rgba8Image first = renderCrowd(context, crowd::Crowd(a, only(0)), camera);
+    const app::Rgba8Image second = renderCrowd(context, crowd::Crowd(b, only(1)), camera);
+    const app::Rgba8Image empty = renderCrowd(context, crowd::Crowd(a, {away}), camera);
     MixedCrowdMatch match;
     std::size_t matching = 0, firstMatching = 0, secondMatching = 0;
     for (std::size_t p = 0; p < both.pixels.size(); p += 4) {
@@ -149,14 +280,14 @@ MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model
     match.firstModelMatching = static_cast<double>(firstMatching) / static_cast<double>(std::max<std::size_t>(match.firstModelPixels, 1));
     match.secondModelMatching = static_cast<double>(secondMatching) / static_cast<double>(std::max<std::size_t>(match.secondModelPixels, 1));
     if (match.matchingFraction < 0.995) {
-        render::writePng(artifactPath(name + "-mixed.png"), both);
-        render::writePng(artifactPath(name + "-first.png"), first);
-        render::writePng(artifactPath(name + "-second.png"), second);
+        app::writePng(artifactPath(name + "-mixed.png"), both);
+        app::writePng(artifactPath(name + "-first.png"), first);
+        app::writePng(artifactPath(name + "-second.png"), second);
     }
     return match;
 }
 
-double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance) {
+double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b, int tolerance) {
     if (a.width != b.width || a.height != b.height || a.pixels.empty()) return 0.0;
     std::size_t matching = 0;
     for (std::size_t p = 0; p < a.pixels.size(); p += 4) {

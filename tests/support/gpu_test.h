@@ -7,20 +7,84 @@
 
 #include <gtest/gtest.h>
 
-#include "crowd/crowd.h"
 #include "app/crowd_renderer.h"
+#include "app/host_device.h"
+#include "app/options.h"
+#include "app/png_writer.h"
+#include "crowd/crowd.h"
+#include "frame/crowd_recorder.h"
 #include "gpu/vulkan_context.h"
-#include "render/png_writer.h"
 #include "skin/skinning_method.h"
 
 namespace test {
 
+// The programs' device (app::HostDevice, validated) and the library's view of it with a queue of its
+// own, so each pass can be checked alone with its setup submitted at once.
 class GpuTest : public ::testing::Test {
 protected:
     void SetUp() override;
     void TearDown() override;
+    std::unique_ptr<app::HostDevice> device;
     std::unique_ptr<gpu::VulkanContext> context;
 };
+
+// The programs' frame driver's options with the library's internal ones (a shared atlas, a smaller
+// target limit, an internal method), as the tests need them.
+struct RendererOptions : frame::RecorderOptions {
+    VkExtent2D size{1280, 720};
+    app::PassClock passClock = app::PassClock::TimestampQueries;
+};
+
+// The programs' device behind a GpuTest's library context.
+const app::HostDevice& hostOf(const gpu::VulkanContext& context);
+
+// A public crowd over an internal crowd the test keeps (borrowed, not moved).
+crowdgpu::Crowd borrowCrowd(crowd::Crowd& crowd);
+
+struct BorrowedCrowd {
+    explicit BorrowedCrowd(crowd::Crowd& crowd) : publicCrowd(borrowCrowd(crowd)) {}
+    crowdgpu::Crowd publicCrowd;
+};
+
+// TestRenderer, the programs' frame driver, over an internal crowd and internal options, with
+// the library's internals at hand for checks (its recorder, lists, buffers, method).
+class TestRenderer : private BorrowedCrowd, public app::CrowdRenderer {
+public:
+    TestRenderer(const app::HostDevice& device, crowd::Crowd& crowd, const RendererOptions& options);
+    // On the device of the test's context (the GpuTest's own), for helpers that take only the context.
+    TestRenderer(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RendererOptions& options);
+    frame::CrowdRecorder& recorder() const;
+    skin::SkinningMethod& method() { return recorder().method(); }
+    const render::GeometryPool& pool() const { return recorder().pool(); }
+    const render::CrowdBuffers& buffers() const { return recorder().buffers(); }
+    const render::DrawLists& drawLists() const { return recorder().drawLists(); }
+    const render::CullPass& cullPass() const { return recorder().cullPass(); }
+    std::shared_ptr<const render::ImpostorAtlas> impostorAtlas() const { return recorder().impostorAtlas(); }
+    const render::CrowdShape& shape() const { return recorder().shape(); }
+    const render::CullSettings& cull() const { return recorder().cull(); }
+    void setCull(const render::CullSettings& cull);
+    // What the cull pass gets for the current camera and settings (the CPU reference takes the same).
+    gpu::CullUniforms cullUniforms() const;
+};
+
+// The programs' crowd layout (app::buildCrowd) as internal characters of one model.
+std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const app::SceneOptions& scene);
+// Where an internal crowd stands, for the programs' camera paths.
+app::CrowdShape shapeOf(const crowd::Crowd& crowd);
+// The programs' camera of the library's internal one.
+app::Camera appCamera(const render::Camera& camera);
+inline app::Camera appCamera(const app::Camera& camera) { return camera; }
+render::Camera internalCamera(const app::Camera& camera);
+// Counts of the public kind from a renderer's stats, as the internal kind.
+render::LodCounts internalCounts(const crowdgpu::FrameCounts& counts);
+
+// The clip of this name (or index text), else the model's default clip, as app::clipIndex picks it.
+std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& clip);
+
+// The public method of an internal one.
+crowdgpu::Method publicMethod(skin::Method method);
+// A model as the programs load it (app::loadModel), as the library holds it.
+model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed = 1);
 
 // The world-space positions and normals (xyz, w as written) of one character, read back from the GPU.
 struct ReadbackVertices {
@@ -41,14 +105,14 @@ struct DrawnCharacter {
 };
 // The last frame's compacted draw list, by character (culled characters are absent); call after finish().
 std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
-                                                     const app::CrowdRenderer& renderer);
+                                                     const TestRenderer& renderer);
 
 // The last frame's skinned vertices of one drawn character (it must be in the draw list).
-ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, app::CrowdRenderer& renderer,
+ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, TestRenderer& renderer,
                                       std::uint32_t character);
 
 // Fraction of pixels whose every channel differs by at most `tolerance` (out of 255).
-double fractionOfMatchingPixels(const render::Rgba8Image& a, const render::Rgba8Image& b, int tolerance);
+double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b, int tolerance);
 
 // A crowd of two models side by side against the same characters drawn as two one-model crowds and as
 // an empty scene: pixels that only the first (second) crowd covers, and the fraction of the mixed
@@ -61,7 +125,7 @@ struct MixedCrowdMatch {
     double firstModelMatching = 0.0;      // of the first model's pixels
     double secondModelMatching = 0.0;     // of the second model's pixels
 };
-MixedCrowdMatch compareMixedCrowd(const gpu::VulkanContext& context, const model::SkinnedModel& a,
+MixedCrowdMatch compareMixedCrowd(const app::HostDevice& context, const model::SkinnedModel& a,
                                   const model::SkinnedModel& b, float scaleB, const std::string& name);
 
 // Where failing image tests leave their images for a person to look at.

@@ -1,0 +1,232 @@
+#include "app/options.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "app/number_text.h"
+#include "app/scene_presets.h"
+#include "app/start_time.h"
+
+#include "app/error.h"
+
+namespace app {
+
+
+const char* renderUsage() {
+    return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
+
+usage: crowd-render [options]
+  --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march or mill: a
+                          crowd, what it does, its culling and LOD, and a camera path (flags beside
+                          it override)
+  --model LIST            soldier, horse or a skinned glTF 2.0 file (.gltf/.glb); several as
+                          NAME[:WEIGHT],... e.g. soldier:3,horse:1 (default soldier)
+  --asset-root DIR        let a glTF file's buffers and images come from anywhere inside DIR (default:
+                          the file's own folder and below)
+  --count N               characters, 1..16777216 (default 1024)
+  --lod on|off            three levels of detail chosen by projected size (default on)
+  --cull gpu|cpu|off      frustum culling and LOD choice on the GPU, on the CPU (the reference), or
+                          no culling (default gpu)
+  --lod-thresholds A,B    LOD 0 while a character's pose sphere is at least A pixels across, LOD 1
+                          while at least B, else LOD 2 (default 150,50)
+  --impostors on|off      the impostor level: characters whose pose sphere is under the impostor
+                          threshold are drawn as camera-facing quads from an atlas baked at load time
+                          (default off)
+  --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
+  --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame, the rest are
+                          drawn as impostors; sizes the skinned-vertex buffers (default 65536)
+  --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
+  --start SECONDS         scene time of the first frame: where on the camera path (and in the clips)
+                          the run begins (default 0; at most 3600, and for march and mill at most
+                          1e7 / --count: they replan every character from 0 s)
+  --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
+                          fraction of it, 0..0.5 (default 0.1)
+  --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
+  --behaviour NAME        in-place (every character loops its clip where it stands, as in the paper),
+                          march (a formation in step: out, about turn, back, halt) or mill (each
+                          wanders between targets near home, walking, running and stopping)
+  --animation cpu|gpu     bone matrices from CPU jobs uploaded each frame (the reference), or from
+                          compute passes for the characters culling keeps (default gpu)
+  --method NAME           skinning method: two-pass (default, the paper's), vs (the paper's baseline),
+                          vs-instanced, two-pass-direct, compute, static (no skinning: the ceiling)
+  --frames N              frames to render (default 30)
+  --size WxH              image size in pixels (default 1280x720)
+  --out FILE.png          image of the last frame (default crowd.png)
+  --json FILE             fps, median frame ms, median GPU ms per pass, device and driver
+  --device INDEX|NAME     Vulkan device by index or name substring (see --list-devices)
+  --seed N                seed of the crowd's layout, phases and speeds (default 1)
+  --validation            enable the Khronos validation layer (with synchronization checks)
+  --list-devices          print the Vulkan devices and exit
+  --list-clips            print the model, its levels of detail, pose sphere and clips and exit (no GPU)
+  --export-pose FILE.obj  write one character's skinned mesh at --clip and --time as OBJ and exit (no GPU)
+  --time SECONDS          time into the clip for --export-pose (default 0; clips loop)
+  --help                  print this help and exit
+)";
+}
+
+std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t min, std::uint32_t max) {
+    std::uint64_t value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error == std::errc::invalid_argument || ptr != end)
+        throw app::Error(flag + ": '" + text + "' is not a whole number");
+    if (error == std::errc::result_out_of_range || value > max)
+        throw app::Error(flag + ": " + text + " is too large (at most " + std::to_string(max) + ")");
+    if (value < min) throw app::Error(flag + ": " + text + " is too small (at least " + std::to_string(min) + ")");
+    return static_cast<std::uint32_t>(value);
+}
+
+VkExtent2D parseSize(const std::string& flag, const std::string& text) {
+    const std::size_t x = text.find('x');
+    if (x == std::string::npos) throw app::Error(flag + ": '" + text + "' is not of the form WIDTHxHEIGHT");
+    const std::uint32_t width = parseCount(flag + " width", text.substr(0, x), 1, 16384);
+    const std::uint32_t height = parseCount(flag + " height", text.substr(x + 1), 1, 16384);
+    return {width, height};
+}
+
+float parseNumber(const std::string& flag, const std::string& text, float min, float max) {
+    float value = 0.0f;
+    const char* end = text.data() + text.size();
+    const auto [ptr, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || ptr != end || !std::isfinite(value))
+        throw app::Error(flag + ": '" + text + "' is not a number");
+    if (value < min || value > max)
+        throw app::Error(flag + ": " + text + " is outside " + formatNumber(min) + ".." + formatNumber(max));
+    return value;
+}
+
+namespace {
+
+std::string formatPixels(float pixels) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", pixels);
+    return text;
+}
+
+bool parseOnOff(const std::string& flag, const std::string& text) {
+    if (text == "on") return true;
+    if (text == "off") return false;
+    throw app::Error(flag + ": '" + text + "' is not on or off");
+}
+
+void parseThresholds(const std::string& flag, const std::string& text, app::CullOptions& cull) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) throw app::Error(flag + ": '" + text + "' is not of the form A,B (pixels)");
+    const float a = parseNumber(flag, text.substr(0, comma), 0.0f, 1e6f);
+    const float b = parseNumber(flag, text.substr(comma + 1), 0.0f, 1e6f);
+    if (!(a > b && b > 0.0f))
+        throw app::Error(flag + ": thresholds " + text + " are out of order (need A > B > 0: LOD 0 above A pixels, "
+                         "LOD 1 above B)");
+    cull.lodThresholds[0] = a;
+    cull.lodThresholds[1] = b;
+}
+
+// Sets the crowd, culling and camera of a preset; flags parsed afterwards override them.
+void applyPreset(const ScenePreset& preset, RenderOptions& options) {
+    options.scene.scene = preset.name;
+    options.scene.model = preset.models;
+    options.scene.count = preset.count;
+    options.cull.lod = preset.lod;
+    options.cull.mode = preset.cull;
+    options.camera = preset.camera;
+    options.scene.behaviour = preset.behaviour;
+}
+
+// --scene first, wherever it stands, so that every other flag overrides the preset.
+std::string sceneName(const std::vector<std::string>& args) {
+    std::string name = "default";
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--scene" && i + 1 < args.size()) name = args[i + 1];
+        else if (args[i].rfind("--scene=", 0) == 0) name = args[i].substr(8);
+    }
+    return name;
+}
+
+}  // namespace
+
+RenderOptions parseRenderOptions(const std::vector<std::string>& args, const ExtraFlagParser& extra) {
+    RenderOptions options;
+    applyPreset(findScenePreset(sceneName(args)), options);
+    bool impostorThresholdGiven = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string flag = args[i];
+        std::string value;
+        bool hasInlineValue = false;
+        if (const std::size_t eq = flag.find('='); flag.rfind("--", 0) == 0 && eq != std::string::npos) {
+            value = flag.substr(eq + 1);
+            flag = flag.substr(0, eq);
+            hasInlineValue = true;
+        }
+        bool valueTaken = false;
+        // An empty value is an error, never "not given": --json '' must not quietly skip the JSON.
+        auto next = [&]() -> std::string {
+            valueTaken = true;
+            if (!hasInlineValue) {
+                if (i + 1 >= args.size()) throw app::Error(flag + " needs a value (see --help)");
+                value = args[++i];
+            }
+            if (value.empty()) throw app::Error(flag + ": empty value");
+            return value;
+        };
+        if (flag == "--help" || flag == "-h") options.help = true;
+        else if (flag == "--list-devices") options.listDevices = true;
+        else if (flag == "--validation") options.validation = true;
+        else if (flag == "--scene") next();  // applied first
+        else if (flag == "--model") options.scene.model = next();
+        else if (flag == "--lod") options.cull.lod = parseOnOff(flag, next());
+        else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
+        else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
+        else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
+        else if (flag == "--impostor-threshold") {
+            options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);
+            impostorThresholdGiven = true;
+            if (!(options.cull.impostorThreshold > 0.0f)) throw app::Error(flag + ": the threshold must be above 0 pixels");
+        }
+        else if (flag == "--mesh-capacity") options.meshCapacity = parseCount(flag, next(), 1, kMaxCharacters);
+        else if (flag == "--start") options.startSeconds = parseNumber(flag, next(), 0.0f, kMaxStartSeconds);
+        else if (flag == "--lod-hysteresis") options.cull.hysteresis = parseNumber(flag, next(), 0.0f, 0.5f);
+        else if (flag == "--cull") {
+            const std::string mode = next();
+            if (!app::parseCulling(mode, options.cull.mode))
+                throw app::Error("--cull: '" + mode + "' is not gpu, cpu or off");
+        }
+        else if (flag == "--asset-root") options.scene.assetRoot = next();
+        else if (flag == "--behaviour") {
+            const std::string name = next();
+            if (!app::parseBehaviour(name, options.scene.behaviour))
+                throw app::Error("--behaviour: '" + name + "' is not in-place, march or mill");
+        } else if (flag == "--animation") {
+            const std::string name = next();
+            if (!app::parseAnimation(name, options.animation))
+                throw app::Error("--animation: '" + name + "' is not cpu or gpu");
+        }
+        else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
+        else if (flag == "--clip") options.scene.clip = next();
+        else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);
+        else if (flag == "--frames") options.frames = parseCount(flag, next(), 1, 1000000);
+        else if (flag == "--size") options.size = parseSize(flag, next());
+        else if (flag == "--out") options.out = next();
+        else if (flag == "--json") options.json = next();
+        else if (flag == "--device") options.device = next();
+        else if (flag == "--method") {
+            const std::string name = next();
+            if (!app::parseMethod(name, options.method))
+                throw app::Error("--method: unknown method '" + name + "' (" + methodList() + ")");
+        } else if (!extra || !extra(flag, next)) {
+            throw app::Error("unknown option '" + args[i] + "' (see --help)");
+        }
+        // --validation=no must not turn validation on.
+        if (hasInlineValue && !valueTaken) throw app::Error(flag + " takes no value (got '" + flag + "=" + value + "')");
+    }
+    // Checked once every flag is known: --lod-thresholds may come after it. Only when impostors are on or
+    // their threshold was given: otherwise the default threshold would refuse valid --lod-thresholds 20,10.
+    if ((options.cull.impostors || impostorThresholdGiven) && !(options.cull.impostorThreshold < options.cull.lodThresholds[1]))
+        throw app::Error("--impostor-threshold: " + formatPixels(options.cull.impostorThreshold) +
+                         " px is not below the LOD 2 threshold of " + formatPixels(options.cull.lodThresholds[1]) +
+                         " px (--lod-thresholds A,B needs B > impostor threshold > 0)");
+    checkStartTime(options.startSeconds, options.scene.count, options.scene.behaviour);
+    return options;
+}
+
+}  // namespace app

@@ -1,0 +1,85 @@
+#include "app/render_target.h"
+
+#include <cstring>
+
+#include "app/host_device.h"
+
+namespace app {
+
+RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, VkFormat color, VkFormat depth)
+    : device_(device) {
+    color_ = createImage(device, extent, color, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                         "scene colour");
+    try {
+        depth_ = createImage(device, extent, depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "scene depth");
+    } catch (...) {
+        destroyImage(device, color_);
+        throw;
+    }
+}
+
+RenderTarget::~RenderTarget() {
+    destroyImage(device_, depth_);
+    destroyImage(device_, color_);
+}
+
+void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]) {
+    // The previous frame's writes (and readback copy) must finish before this frame clears.
+    transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
+                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    constexpr VkPipelineStageFlags2 depthTests =
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    transitionImage(cmd, depth_.image, VK_IMAGE_ASPECT_DEPTH_BIT, depthTests,
+                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, depthTests,
+                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+
+    VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    colorAttachment.imageView = color_.view;
+    colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    std::memcpy(colorAttachment.clearValue.color.float32, clearColor, 4 * sizeof(float));
+    VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthAttachment.imageView = depth_.view;
+    depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depthAttachment.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    info.renderArea = {{0, 0}, color_.extent};
+    info.layerCount = 1;
+    info.colorAttachmentCount = 1;
+    info.pColorAttachments = &colorAttachment;
+    info.pDepthAttachment = &depthAttachment;
+    vkCmdBeginRendering(cmd, &info);
+}
+
+void RenderTarget::endRendering(VkCommandBuffer cmd) {
+    vkCmdEndRendering(cmd);
+    // Any transfer next: the readback copies, the viewer blits to its swapchain.
+    transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                    VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+}
+
+Rgba8Image RenderTarget::readback() {
+    const VkExtent2D extent = color_.extent;
+    const VkDeviceSize size = static_cast<VkDeviceSize>(extent.width) * extent.height * 4;
+    ReadbackBuffer staging = createReadbackBuffer(device_, size, "scene readback");
+    device_.submitAndWait([&](VkCommandBuffer cmd) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {extent.width, extent.height, 1};
+        vkCmdCopyImageToBuffer(cmd, color_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &region);
+    });
+    Rgba8Image image{extent.width, extent.height, std::vector<std::uint8_t>(size)};
+    std::memcpy(image.pixels.data(), staging.mapped, size);
+    destroyReadbackBuffer(device_, staging);
+    return image;
+}
+
+}  // namespace app

@@ -1,0 +1,85 @@
+#include "view/crowd_scene.h"
+
+#include <algorithm>
+
+#include "app/crowd_app.h"
+#include "app/error.h"
+#include "app/host_device.h"
+
+namespace view {
+
+CrowdScene::CrowdScene(const app::HostDevice& context, const app::SceneOptions& scene, crowdgpu::Method method,
+                       const app::CullOptions& cull, bool shadows, std::uint32_t meshCapacity, VkExtent2D size)
+    : context_(context), scene_(scene), method_(method), cull_(cull), shadows_(shadows), meshCapacity_(meshCapacity) {
+    rebuild(scene, size);
+}
+
+app::RendererOptions CrowdScene::rendererOptions(crowdgpu::Method method, VkExtent2D size) const {
+    app::RendererOptions options;
+    static_cast<crowdgpu::RendererSettings&>(options) =
+        app::rendererSettings(cull_, method, animation_, shadows_, meshCapacity_);
+    options.size = size;
+    return options;
+}
+
+void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
+    std::vector<std::string> notes;
+    app::CrowdModels models = app::loadModels(scene.model, scene.seed, &notes, scene.assetRoot);
+    auto next = [&] {
+        try {
+            return std::make_unique<crowdgpu::Crowd>(app::buildCrowd(models, scene));
+        } catch (const app::Error&) {
+            // A clip named for one model (--clip idle) need not exist in the next one picked in the panel.
+            if (scene.clip.empty() || scene.clip == "random" || !crowd_) throw;
+            notes.push_back(models.models.front().name() + " has no clip '" + scene.clip + "'; playing its default clip");
+            scene.clip.clear();
+            return std::make_unique<crowdgpu::Crowd>(app::buildCrowd(models, scene));
+        }
+    }();
+    // The panel may have changed culling, LOD or impostors since the last build: keep what it shows.
+    if (renderer_) cull_ = cullOf(renderer_->settings());
+    app::checkCrowdFits(context_, *next, rendererOptions(method_, size), size);
+    // Release the current crowd (renderer first: it refers to the crowd) before allocating the next,
+    // so both never need to fit at once.
+    renderer_.reset();
+    crowd_ = std::move(next);
+    models_ = std::move(models);
+    renderer_ = std::make_unique<app::CrowdRenderer>(context_, *crowd_, rendererOptions(method_, size));
+    scene_ = scene;
+    notes_.insert(notes_.end(), notes.begin(), notes.end());
+}
+
+void CrowdScene::setMethod(crowdgpu::Method method, VkExtent2D size) {
+    cull_ = cullOf(renderer_->settings());
+    app::checkCrowdFits(context_, *crowd_, rendererOptions(method, size), size);
+    renderer_->setMethod(method);
+    method_ = method;
+}
+
+std::uint32_t CrowdScene::maxCharacters(VkExtent2D size) const {
+    // Memory grows with the characters: this crowd's bytes per character (its fixed costs included,
+    // so the limit errs low) against the device's memory. A rebuild still checks the real size.
+    app::RendererOptions options = rendererOptions(method_, size);
+    static_cast<crowdgpu::RendererSettings&>(options) = renderer_->settings();
+    const double perCharacter = static_cast<double>(app::estimateCrowdBytes(context_, *crowd_, options, size)) /
+                                static_cast<double>(std::max(crowd_->size(), 1u));
+    const double memoryLimit = static_cast<double>(context_.deviceLocalBytes()) / std::max(perCharacter, 1.0);
+    // Nor may a buffer bound whole as a storage buffer outgrow the device's range (lavapipe: 128 MiB).
+    const double rangeLimit =
+        static_cast<double>(crowdgpu::checkDeviceLimits(context_.physicalDevice, *crowd_, options).mostCharacters);
+    return static_cast<std::uint32_t>(std::clamp(std::min(memoryLimit, rangeLimit), 1.0, static_cast<double>(app::kMaxCharacters)));
+}
+
+app::CullOptions cullOf(const crowdgpu::RendererSettings& settings) {
+    app::CullOptions cull;
+    cull.mode = settings.culling;
+    cull.lod = settings.lod;
+    cull.lodThresholds[0] = settings.lodThresholds[0];
+    cull.lodThresholds[1] = settings.lodThresholds[1];
+    cull.hysteresis = settings.lodHysteresis;
+    cull.impostors = settings.impostors;
+    cull.impostorThreshold = settings.impostorThreshold;
+    return cull;
+}
+
+}  // namespace view
