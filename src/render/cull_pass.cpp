@@ -154,8 +154,9 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
 void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms) {
     cpuLodState_.resize(lists_.characterCount(), 0u);
     std::vector<std::uint32_t> impostorList;
+    std::uint32_t demoted = 0;
     const crowd::VisibleLists visible =
-        crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_, &impostorList);
+        crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_, &impostorList, &demoted);
     const gpu::Buffer& staging = lists_.cpuStaging(frameSlot);
     auto* frames = static_cast<gpu::BucketFrame*>(staging.mapped);
     auto* list = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(staging.mapped) + lists_.bucketFrames().size);
@@ -173,6 +174,7 @@ void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, co
     const VkDeviceSize impostorBase = lists_.bucketFrames().size + lists_.visible().size;
     gpu::ImpostorFrame impostors{};
     impostors.count = static_cast<std::uint32_t>(impostorList.size());
+    impostors.demoted = demoted;
     std::byte* base = static_cast<std::byte*>(staging.mapped) + impostorBase;
     std::memcpy(base, &impostors, sizeof impostors);
     std::copy(impostorList.begin(), impostorList.end(), reinterpret_cast<std::uint32_t*>(base + sizeof impostors));
