@@ -142,8 +142,9 @@ struct ImpostorFrame {
 // A candidate's second word: the size's bits, and in bit 31 whether it is drawn as an impostor when
 // demoted (in view; a shadow caster outside the view is not).
 #define MESH_CUT_DRAWN_BIT 0x80000000u
-// Threads of the cut's one-workgroup passes (cutoff and resolve); divides both bucket counts.
-#define MESH_CUT_WORKGROUP_SIZE 256
+// Threads of the cut's one-workgroup passes (cutoff and resolve): as many as every Vulkan device must
+// allow in one workgroup; divides both bucket counts.
+#define MESH_CUT_WORKGROUP_SIZE 128
 
 // Where the cut falls in a frame. In one buffer with the histograms and the tie bitset after it (as
 // uint words: coarse buckets, then fine buckets, then one bit per character).
