@@ -10,7 +10,7 @@
 
 #include "app/image_difference.h"
 #include "app/png_reader.h"
-#include "gpu/vulkan_error.h"
+#include "app/error.h"
 #include "app/png_writer.h"
 #include "support/run_program.h"
 
@@ -37,7 +37,7 @@ TEST(ImagePsnr, MatchesTheHandComputedFigure) {
     app::Rgba8Image translucent = twoPixels(0);
     translucent.pixels[3] = 0;
     EXPECT_TRUE(std::isinf(app::compareImages(twoPixels(0), translucent).psnr));
-    EXPECT_THROW(app::compareImages(twoPixels(0), app::Rgba8Image{1, 1, {0, 0, 0, 255}}), gpu::Error);
+    EXPECT_THROW(app::compareImages(twoPixels(0), app::Rgba8Image{1, 1, {0, 0, 0, 255}}), app::Error);
 }
 
 TEST(ImagePsnr, ProgramPrintsOneLineAndRefusesBadInput) {

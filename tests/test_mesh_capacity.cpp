@@ -19,7 +19,7 @@
 #include "app/crowd_renderer.h"
 #include "crowd/cull_reference.h"
 #include "crowd/farthest_first.h"
-#include "render/camera_path.h"
+#include "app/camera_path.h"
 #include "support/gpu_test.h"
 
 namespace {
@@ -138,11 +138,11 @@ CutResult cutRow(const gpu::VulkanContext& context, const model::SkinnedModel& s
     options.atlas = atlas;
     test::TestRenderer renderer(context, crowd, options);
     atlas = renderer.impostorAtlas();
-    renderer.camera = camera;
+    renderer.camera = test::appCamera(camera);
     renderer.renderFrame(0.0f);
     renderer.finish();
     CutResult result;
-    result.counts = renderer.stats().back().lods;
+    result.counts = test::internalCounts(renderer.stats().back().lods);
     result.gpuLists = test::readVisibleLists(context, renderer);
     result.gpuImpostors = test::readImpostorList(context, renderer);
     const std::vector<gpu::CharacterRecord> records = test::readCharacterRecords(context, renderer);
@@ -278,13 +278,13 @@ TEST_F(GpuTest, MeshCutFollowsTheRuleAlongACameraPath) {
     options.cull.impostorThreshold = 4.0f;
     options.meshCapacity = 90;
     test::TestRenderer renderer(*context, crowd, options);
-    const render::CrowdShape shape = app::crowdShape(crowd);
+    const app::CrowdShape shape = test::shapeOf(crowd);
     std::set<std::uint32_t> demotedCounts;
     std::uint32_t framesWithinCapacity = 0;
     std::size_t demotedInView = 0, demotedCasters = 0;
     for (float seconds : {0.0f, 3.0f, 6.0f, 9.0f, 12.0f, 15.0f, 18.0f, 20.0f}) {
         SCOPED_TRACE("at " + std::to_string(seconds) + " s");
-        renderer.camera = render::cameraOnPath(render::CameraPath::FlyOver, shape, 160.0f / 90.0f, seconds);
+        renderer.camera = app::cameraOnPath(app::CameraPath::FlyOver, shape, 160.0f / 90.0f, seconds);
         renderer.renderFrame(seconds);
         renderer.finish();
         const std::vector<GpuCandidate> candidates = readCandidates(*context, renderer);
@@ -302,7 +302,7 @@ TEST_F(GpuTest, MeshCutFollowsTheRuleAlongACameraPath) {
         const std::vector<std::uint32_t> impostors = test::readImpostorList(*context, renderer);
         for (std::uint32_t c : drawnDemoted) EXPECT_TRUE(std::binary_search(impostors.begin(), impostors.end(), c)) << c;
         for (std::uint32_t c : hiddenDemoted) EXPECT_FALSE(std::binary_search(impostors.begin(), impostors.end(), c)) << c;
-        const render::LodCounts counts = renderer.takeStats().back().lods;
+        const render::LodCounts counts = test::internalCounts(renderer.takeStats().back().lods);
         EXPECT_EQ(counts.demoted, drawnDemoted.size() + hiddenDemoted.size());
         demotedCounts.insert(counts.demoted);
         framesWithinCapacity += counts.demoted == 0 ? 1u : 0u;
@@ -345,10 +345,10 @@ TEST_F(GpuTest, NearCharactersKeepTheirMeshesUnderASmallMeshCapacity) {
         options.atlas = atlas;
         test::TestRenderer renderer(*context, crowd, options);
         atlas = renderer.impostorAtlas();
-        renderer.camera = render::cameraOnPath(render::CameraPath::Framed, app::crowdShape(crowd), 320.0f / 180.0f, 0.0f);
+        renderer.camera = app::cameraOnPath(app::CameraPath::Framed, test::shapeOf(crowd), 320.0f / 180.0f, 0.0f);
         renderer.renderFrame(11.0f);
         renderer.finish();
-        counts[run] = renderer.takeStats().back().lods;
+        counts[run] = test::internalCounts(renderer.takeStats().back().lods);
         images[run] = renderer.readback();
         capacity = counts[Uncapped].visible() / 2;
     }
