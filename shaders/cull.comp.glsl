@@ -2,26 +2,28 @@
 #extension GL_GOOGLE_include_directive : require
 // The cull pass (niagara's drawcull): one thread per character tests its pose sphere against the
 // view frustum, picks its level of detail with hysteresis, and appends it to the visible list of
-// its (model, LOD) bucket. The CPU never sees per-character visibility.
+// its (model, LOD) bucket. The CPU never sees per-character visibility. With a mesh-level cap, a
+// character that qualifies for a mesh level is listed as a candidate of the cut instead
+// (mesh_cut.glsl.inc): which ones keep their meshes is known only once all are counted.
 #include "gpu_types.h"
 #include "cull.glsl.inc"
+#include "cull_lists.glsl.inc"
+#include "mesh_cut.glsl.inc"
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
 
 layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 1) readonly buffer Models { ModelRecord models[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };
-layout(std430, set = 0, binding = 4) buffer Frames { BucketFrame frames[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer Visible { uint visible[]; };
 layout(std430, set = 0, binding = 6) buffer LodState { uint lodState[]; };
-layout(std430, set = 0, binding = 12) buffer Impostors { ImpostorFrame impostorFrame; };
-layout(std430, set = 0, binding = 13) writeonly buffer ImpostorList { uint impostors[]; };
+layout(std430, set = 0, binding = 15) writeonly buffer Candidates { uvec2 candidates[]; };
 
 // Impostors cast no shadow (they are not drawn into the shadow map), so only those in view are kept.
-void appendImpostor(uint c, vec4 sphere) {
-    if (cull.flags.y != 0u && !sphereInFrustum(cull.planes, sphere)) return;
-    impostors[atomicAdd(impostorFrame.count, 1u)] = c;
+bool drawnAsImpostor(vec4 sphere) { return cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere); }
+
+void listMeshCandidate(uint c, float size, bool drawnIfDemoted) {
+    uvec2 candidate = meshCandidate(c, size, drawnIfDemoted);
+    candidates[atomicAdd(impostorFrame.meshCount, 1u)] = candidate;
+    atomicAdd(meshCutWords[COARSE_HISTOGRAM + coarseBucketOf(candidateKey(candidate))], 1u);
 }
 
 void cullCharacter(uint c) {
@@ -30,25 +32,23 @@ void cullCharacter(uint c) {
     bool inView = cull.flags.y == 0u ||
                   (cull.limits.y != 0u ? casterInFrustum(cull.planes, sphere, cull.light.xyz)
                                        : sphereInFrustum(cull.planes, sphere));
+    float size = projectedDiameter(sphere, cull.camera);
     // Every character's level is kept up to date, visible or not, so culling never changes a level.
     uint lod = 0u;
-    if (cull.flags.z != 0u) lod = chooseLod(projectedDiameter(sphere, cull.camera), lodState[c], cull.lod);
+    if (cull.flags.z != 0u) lod = chooseLod(size, lodState[c], cull.lod);
     lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
     if (lod == IMPOSTOR_LEVEL) {
-        appendImpostor(c, sphere);
+        if (drawnAsImpostor(sphere)) appendImpostor(c);
         return;
     }
     if (!inView) return;
-    // The mesh levels hold at most limits.z characters (their skinned vertices are sized for that);
-    // the rest are drawn as impostors. Which ones is the order of the atomics: any, when over the cap.
-    if (cull.limits.z != 0u && atomicAdd(impostorFrame.meshCount, 1u) >= cull.limits.z) {
-        atomicAdd(impostorFrame.demoted, 1u);
-        appendImpostor(c, sphere);
+    // The mesh levels hold at most limits.z characters (their skinned vertices are sized for that): the
+    // cut keeps the largest on screen and demotes the rest, farthest first.
+    if (cull.limits.z != 0u) {
+        listMeshCandidate(c, size, drawnAsImpostor(sphere));
         return;
     }
-    uint bucket = character.ids.x * LOD_COUNT + lod;
-    uint slot = atomicAdd(frames[bucket].count, 1u);
-    visible[buckets[bucket].list.z + slot] = c;
+    appendToBucket(c, lod);
 }
 
 void main() {

@@ -124,9 +124,36 @@ struct ImpostorModel {
 // instanced draw of a 6-index quad (the first five members are VkDrawIndexedIndirectCommand).
 struct ImpostorFrame {
     uint count;          // characters drawn as impostors (in view)
-    uint meshCount;      // characters culling sent to a mesh level (before the cap), visible or caster
+    uint meshCount;      // with a cap: characters that qualified for a mesh level, visible or caster (the
+                         // candidates of the cut, MeshCut)
     uint demoted;        // of those, sent to the impostor level because the mesh levels were full
     uint unused;
+};
+
+// ---- The mesh-level cap's cut: farthest first (render/mesh_cut.h; shaders/cull_cutoff, cull_split,
+// cull_resolve; the CPU rule in crowd/farthest_first.h) ----
+// When more characters qualify for a mesh level than the cap, the cap's worth with the largest projected
+// size keep it. A size is ranked by its float bits (a non-negative float orders as its bits do) in two
+// histograms: the coarse one by the top bits, the fine one, over the cut's coarse bucket only, by the
+// rest; exact ties at the cut go to the lower character index (a bitset over the characters).
+#define MESH_CUT_FINE_BITS 16
+#define MESH_CUT_FINE_BUCKETS (1u << MESH_CUT_FINE_BITS)
+#define MESH_CUT_COARSE_BUCKETS (1u << (31 - MESH_CUT_FINE_BITS))  // the sign bit is never set
+// A candidate's second word: the size's bits, and in bit 31 whether it is drawn as an impostor when
+// demoted (in view; a shadow caster outside the view is not).
+#define MESH_CUT_DRAWN_BIT 0x80000000u
+// Threads of the cut's one-workgroup passes (cutoff and resolve): as many as every Vulkan device must
+// allow in one workgroup; divides both bucket counts.
+#define MESH_CUT_WORKGROUP_SIZE 128
+
+// Where the cut falls in a frame. In one buffer with the histograms and the tie bitset after it (as
+// uint words: coarse buckets, then fine buckets, then one bit per character).
+struct MeshCut {
+    uint keepAll;        // 1: no more qualified than the cap, so every candidate keeps its mesh
+    uint coarseBucket;   // the coarse bucket holding the smallest kept size
+    uint keepInCoarse;   // how many of that bucket's members are kept (its largest)
+    uint boundary;       // that bucket's members, listed by the split pass for the resolve pass
+    uvec4 splitDispatch; // indirect dispatch of the split pass over the candidates (x groups, y = z = 1)
 };
 
 // Impostors are drawn as indexed quads (four vertices, six indices each) from one fixed index buffer
@@ -225,8 +252,8 @@ struct CullUniforms {
     uvec4 flags;     // x: characters, y: 1 = frustum culling, z: 1 = LOD selection (else all LOD 0),
                      // w: buckets
     uvec4 limits;    // x: most workgroups in a dispatch's x dimension, y: 1 = keep shadow casters,
-                     // z: most characters at a mesh level (LOD 0-2) in a frame, the rest are demoted to
-                     // impostors (0: no cap), w: unused
+                     // z: most characters at a mesh level (LOD 0-2) in a frame, the smallest on screen
+                     // beyond it are demoted to impostors (0: no cap), w: unused
     vec4 light;      // xyz: unit vector towards the light (shadow casters), w: unused
 };
 

@@ -78,26 +78,6 @@ crowd::Crowd gridCrowd(const model::SkinnedModel& model, std::uint32_t count) {
     return crowd::Crowd(model, test::buildCharacters(model, scene));
 }
 
-// The GPU's visible lists of the last frame, per bucket, sorted (atomics append in any order).
-crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
-    const render::DrawLists& lists = renderer.drawLists();
-    const std::vector<std::byte> frames = test::readBuffer(context, lists.bucketFrames());
-    const std::vector<std::byte> visible = test::readBuffer(context, lists.visible());
-    crowd::VisibleLists result(lists.bucketCount());
-    for (std::uint32_t b = 0; b < lists.bucketCount(); ++b) {
-        gpu::BucketFrame frame;
-        std::memcpy(&frame, frames.data() + b * sizeof frame, sizeof frame);
-        const std::byte* first = visible.data() + lists.buckets()[b].list.z * 4;
-        for (std::uint32_t k = 0; k < frame.count; ++k) {
-            std::uint32_t c;
-            std::memcpy(&c, first + k * 4, 4);
-            result[b].push_back(c);
-        }
-        std::sort(result[b].begin(), result[b].end());
-    }
-    return result;
-}
-
 std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
     const std::vector<std::byte> bytes = test::readBuffer(context, renderer.drawLists().lodState());
     std::vector<std::uint32_t> state(renderer.buffers().characterCount());
@@ -144,7 +124,7 @@ TEST_F(GpuTest, GpuCullingAndLodChoicesEqualTheCpuReferenceAlongACameraPath) {
         std::vector<std::uint32_t> cpuState = before;
         const crowd::VisibleLists expected =
             crowd::cullOnCpu(uniforms, renderer.buffers().records(), renderer.pool().models(), cpuState);
-        const crowd::VisibleLists gpu = readVisibleLists(*context, renderer);
+        const crowd::VisibleLists gpu = test::readVisibleLists(*context, renderer);
         const std::vector<std::uint32_t> gpuState = readLodState(*context, renderer);
         std::uint32_t visible = 0;
         for (std::size_t b = 0; b < expected.size(); ++b) {

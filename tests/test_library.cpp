@@ -1,15 +1,20 @@
 // The library's front door as a host uses it: crowdgpu::Renderer on a device the test creates,
 // recording into the test's own command buffers and its own target in another colour format.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
 #include "crowdgpu/renderer.hpp"
 #include "crowdgpu/version.h"
+#include "gpu/barriers.h"
+#include "gpu/buffer.h"
+#include "gpu/image.h"
 #include "gpu/one_shot_commands.h"
 #include "gpu/vulkan_error.h"
 #include "app/camera_path.h"
@@ -17,6 +22,14 @@
 #include "render/scene_pass.h"
 #include "support/gpu_test.h"
 #include "support/run_program.h"
+
+// README.md's Embedding block, wrapped by tests/readme_embedding.cpp.in.
+namespace readme {
+void embeddingExample(const crowdgpu::Device& device, const std::function<void(VkCommandBuffer)>& submitAndWait,
+                      VkCommandBuffer setupCmd, VkCommandBuffer cmd, std::uint32_t slot, const crowdgpu::FrameView& view,
+                      float time, const VkRenderingInfo& yourColourPass,
+                      const std::function<void(crowdgpu::Renderer&)>& frameRecorded);
+}  // namespace readme
 
 namespace {
 
@@ -90,6 +103,23 @@ app::Rgba8Image readPng(const std::string& path) {
                              std::vector<std::uint8_t>(data, data + std::size_t(width) * height * 4)};
     stbi_image_free(data);
     return image;
+}
+
+// A B8G8R8A8 colour image in TRANSFER_SRC_OPTIMAL, copied to the host as RGBA.
+app::Rgba8Image readBgraImage(const gpu::VulkanContext& context, const gpu::Image& image) {
+    const VkDeviceSize bytes = VkDeviceSize(image.extent.width) * image.extent.height * 4;
+    gpu::Buffer staging = gpu::createBuffer(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                            gpu::MemoryUse::HostReadback, "test readback");
+    gpu::runOneShotNow(context, [&](VkCommandBuffer cmd) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {image.extent.width, image.extent.height, 1};
+        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &region);
+    });
+    const auto* data = static_cast<const std::uint8_t*>(staging.mapped);
+    app::Rgba8Image result{image.extent.width, image.extent.height, std::vector<std::uint8_t>(data, data + bytes)};
+    gpu::destroyBuffer(context, staging);
+    return bgraToRgba(std::move(result));
 }
 
 const char* methodFlag(crowdgpu::Method method) {
@@ -323,4 +353,116 @@ TEST_F(GpuTest, LibraryRefusesBadUseWithOneClearError) {
         expectError(crowdgpu::ErrorCode::OutOfDeviceMemory, "2000000 characters",
                     [&] { crowdgpu::Renderer(host.device, huge, settings); });
     }
+}
+
+// README.md's Embedding block, run as written: its crowd (crowd-render's default: 1,024 soldiers) in the
+// test's own B8G8R8A8_SRGB + D32 pass, one frame, validation on. The renderer counts the characters it
+// drew, and wherever the frame is not the cleared sky it is crowd-render's picture of the same crowd,
+// camera and time (the block draws no ground).
+TEST_F(GpuTest, ReadmeEmbeddingBlockDrawsTheCrowd) {
+    const VkExtent2D size{256, 144};
+    const std::string png = test::artifactPath("library-readme-crowd-render.png");
+    const test::ProgramResult r = test::runProgram(CROWD_RENDER_BINARY, "--frames 1 --size 256x144 --validation --out " + png);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const app::Rgba8Image program = readPng(png);
+    ASSERT_EQ(program.width, size.width);
+
+    HostDevice host(*context);
+    gpu::Image color = gpu::createImage2D(*context, size, VK_FORMAT_B8G8R8A8_SRGB,
+                                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                          "readme colour");
+    gpu::Image depth = gpu::createImage2D(*context, size, VK_FORMAT_D32_SFLOAT,
+                                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "readme depth");
+    VkCommandBuffer cmds[2];  // the block's setupCmd and cmd
+    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocate.commandPool = context->commandPool;
+    allocate.commandBufferCount = 2;
+    ASSERT_EQ(vkAllocateCommandBuffers(context->device, &allocate, cmds), VK_SUCCESS);
+    VkFence fence;
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    ASSERT_EQ(vkCreateFence(context->device, &fenceInfo, nullptr, &fence), VK_SUCCESS);
+    const auto submitAndWait = [&](VkCommandBuffer cmd) {
+        ASSERT_EQ(vkEndCommandBuffer(cmd), VK_SUCCESS);
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.commandBufferCount = 1;
+        submit.pCommandBuffers = &cmd;
+        ASSERT_EQ(vkQueueSubmit(context->queue, 1, &submit, fence), VK_SUCCESS);
+        ASSERT_EQ(vkWaitForFences(context->device, 1, &fence, VK_TRUE, UINT64_MAX), VK_SUCCESS);
+        vkResetFences(context->device, 1, &fence);
+    };
+    for (VkCommandBuffer cmd : cmds) {
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        ASSERT_EQ(vkBeginCommandBuffer(cmd, &begin), VK_SUCCESS);
+    }
+
+    // The host's colour pass, its images made ready in the frame's command buffer before the block.
+    const VkPipelineStageFlags2 depthTests =
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    gpu::imageBarrier(cmds[1], color.image, VK_IMAGE_ASPECT_COLOR_BIT, {VK_PIPELINE_STAGE_2_NONE, 0},
+                      {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    gpu::imageBarrier(cmds[1], depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, {VK_PIPELINE_STAGE_2_NONE, 0},
+                      {depthTests, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT},
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    colorAttachment.imageView = color.view;
+    colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
+    std::memcpy(colorAttachment.clearValue.color.float32, sky, sizeof sky);
+    VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthAttachment.imageView = depth.view;
+    depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depthAttachment.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo yourColourPass{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    yourColourPass.renderArea = {{0, 0}, size};
+    yourColourPass.layerCount = 1;
+    yourColourPass.colorAttachmentCount = 1;
+    yourColourPass.pColorAttachments = &colorAttachment;
+    yourColourPass.pDepthAttachment = &depthAttachment;
+
+    std::uint32_t drawn = 0;
+    const auto frameRecorded = [&](crowdgpu::Renderer& renderer) {
+        gpu::imageBarrier(cmds[1], color.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                          {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
+                          {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
+                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        submitAndWait(cmds[1]);
+        const crowdgpu::FrameCounts counts = renderer.counts(0);
+        drawn = counts.characters[0] + counts.characters[1] + counts.characters[2];
+    };
+    // The block builds its own crowd: the view is of the same crowd built here.
+    const crowdgpu::FrameView view = defaultView(defaultCrowd(1024), size, 0.0f);
+    readme::embeddingExample(host.device, submitAndWait, cmds[0], cmds[1], 0, view, 0.0f, yourColourPass, frameRecorded);
+    const app::Rgba8Image frame = readBgraImage(*context, color);
+
+    EXPECT_GT(drawn, 0u);
+    std::size_t crowdPixels = 0, matching = 0;
+    // The clear colour as the sRGB target stores it.
+    const auto srgb = [](float linear) {
+        const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+        return static_cast<int>(std::lround(255.0f * encoded));
+    };
+    const int skyPixel[3] = {srgb(sky[0]), srgb(sky[1]), srgb(sky[2])};
+    for (std::size_t i = 0; i < frame.pixels.size(); i += 4) {
+        bool isSky = true;
+        for (int c = 0; c < 3; ++c) isSky = isSky && std::abs(int(frame.pixels[i + c]) - skyPixel[c]) <= 1;
+        if (isSky) continue;
+        ++crowdPixels;
+        bool same = true;
+        for (int c = 0; c < 3; ++c) same = same && std::abs(int(frame.pixels[i + c]) - int(program.pixels[i + c])) <= 1;
+        matching += same;
+    }
+    EXPECT_GT(crowdPixels, frame.pixels.size() / 4 / 20) << "the crowd covers under 5 % of the frame";
+    EXPECT_GE(static_cast<double>(matching), 0.999 * static_cast<double>(crowdPixels));
+
+    vkDestroyFence(context->device, fence, nullptr);
+    vkFreeCommandBuffers(context->device, context->commandPool, 2, cmds);
+    gpu::destroyImage(*context, depth);
+    gpu::destroyImage(*context, color);
+    std::filesystem::remove(png);
 }

@@ -10,26 +10,37 @@
 // Two frames in flight, a fence per frame slot. At the end the colour and ID images are read back
 // and written as <out>/crowd.ppm (RGB) and <out>/ids.pgm (16-bit: character index + 1, 0 = none).
 //
-//   embed_headless [out-dir] [WIDTHxHEIGHT] [frames]     (defaults: . 640x360 8)
+// It also times its frames as crowdgpu's programs time theirs (timestamp queries in its own command
+// buffers, frame_timer.hpp) and can draw the same frames as they do (scenes.hpp), so that a script
+// can show what the library costs inside a host against what it costs in crowd-bench.
+//
+//   embed_headless [options] [out-dir] [WIDTHxHEIGHT] [frames]     (options.hpp; defaults: . 640x360 8)
 //   CROWDGPU_VALIDATION=1 turns on the Khronos validation layer with synchronization validation;
 //   the program then fails if the layer reported anything.
 #include <crowdgpu/renderer.hpp>
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <set>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "frame_timer.hpp"
 #include "id.frag.h"
 #include "id.vert.h"
+#include "options.hpp"
 #include "scene.frag.h"
 #include "scene.vert.h"
+#include "scenes.hpp"
+#include "timing_report.hpp"
 
 namespace {
 
@@ -118,14 +129,18 @@ void createInstance(Gpu& gpu, bool validation) {
     }
 }
 
-// The first Vulkan 1.3 device with everything crowdgpu needs and a graphics + compute queue.
-void pickDevice(Gpu& gpu) {
+// The first Vulkan 1.3 device with everything crowdgpu needs and a graphics + compute queue, whose
+// name contains `name` (any name when empty).
+void pickDevice(Gpu& gpu, const std::string& name) {
     std::uint32_t count = 0;
     vkEnumeratePhysicalDevices(gpu.instance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
     vkEnumeratePhysicalDevices(gpu.instance, &count, devices.data());
     for (VkPhysicalDevice device : devices) {
         if (!crowdgpu::checkPhysicalDevice(device).empty()) continue;  // not 1.3, or a feature missing
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(device, &properties);
+        if (std::string(properties.deviceName).find(name) == std::string::npos) continue;
         std::uint32_t familyCount = 0;
         vkGetPhysicalDeviceQueueFamilyProperties(device, &familyCount, nullptr);
         std::vector<VkQueueFamilyProperties> families(familyCount);
@@ -139,7 +154,7 @@ void pickDevice(Gpu& gpu) {
             }
         }
     }
-    fail("no Vulkan 1.3 device with the features crowdgpu needs");
+    fail("no Vulkan 1.3 device with the features crowdgpu needs" + (name.empty() ? "" : " named like '" + name + "'"));
 }
 
 void createDevice(Gpu& gpu) {
@@ -413,21 +428,189 @@ void writePgm16(const std::string& path, VkExtent2D extent, const std::uint32_t*
     if (!file) fail("cannot write " + path);
 }
 
+// The host's geometry for its view of the crowd: ground around the crowd, two boxes in front of it
+// and one behind.
+std::vector<SceneVertex> hostGeometry(const crowdgpu::Crowd& crowd) {
+    float center[3], radius, tallest;
+    crowd.bounds(center, radius, tallest);
+    std::vector<SceneVertex> vertices;
+    const float g = 1.6f * radius + 2.0f * tallest;
+    addQuad(vertices,
+            {{center[0] - g, 0, center[2] - g}, {center[0] + g, 0, center[2] - g},
+             {center[0] + g, 0, center[2] + g}, {center[0] - g, 0, center[2] + g}},
+            kGround, 1.0f);
+    addBox(vertices, center[0] - 0.55f * radius, center[2] + radius + 1.0f, 1.2f, 1.2f);
+    addBox(vertices, center[0] + 0.55f * radius, center[2] + radius + 1.0f, 1.2f, 1.2f);
+    addBox(vertices, center[0], center[2] - radius - 2.0f, 2.0f, 3.0f);
+    return vertices;
+}
+
+// ---- One frame's commands ----
+
+// The host's images: colour and depth of the crowd's pass, and the ID image of its own pass.
+struct Target {
+    VkExtent2D extent;
+    Image color, depth, ids;
+};
+
+// What the host draws itself: its ground and boxes in the crowd's pass, and the ID pass.
+struct HostDrawing {
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline scene = VK_NULL_HANDLE;
+    VkPipeline id = VK_NULL_HANDLE;
+    Buffer vertices;
+    std::uint32_t vertexCount = 0;
+};
+
+void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent) {
+    const VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0, 1};
+    const VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout, VkAttachmentLoadOp load,
+                                     VkAttachmentStoreOp store) {
+    VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    info.imageView = view;
+    info.imageLayout = layout;
+    info.loadOp = load;
+    info.storeOp = store;
+    return info;
+}
+
+const VkPipelineStageFlags2 kFragmentTests =
+    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+
+// The colour pass: the host's ground and boxes (or, with `host` null, the library's ground as
+// crowd-render draws it), then the crowd. The images are shared by both frame slots: wait for the
+// previous frame's writes before clearing them.
+void recordColourPass(VkCommandBuffer cmd, const Target& target, crowdgpu::Renderer& renderer, std::uint32_t slot,
+                      const HostDrawing* host, const std::array<float, 16>& viewProjection) {
+    std::vector<VkImage> colourImages{target.color.image};
+    if (host) colourImages.push_back(target.ids.image);  // cleared by the ID pass
+    for (VkImage image : colourImages)
+        barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
+                VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    barrier(cmd, target.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, kFragmentTests,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kFragmentTests,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+
+    VkRenderingAttachmentInfo colour = attachment(target.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                                  VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
+    std::memcpy(colour.clearValue.color.float32, kSky, sizeof kSky);
+    // The ID pass tests against this depth; without it nothing reads it after the pass.
+    VkRenderingAttachmentInfo depth =
+        attachment(target.depth.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR,
+                   host ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    depth.clearValue.depthStencil = {1.0f, 0};  // crowdgpu: depth 1 is far, tested with LESS
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, target.extent};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &colour;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    if (host) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, host->scene);
+        setViewportAndScissor(cmd, target.extent);
+        vkCmdPushConstants(cmd, host->layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof viewProjection,
+                           viewProjection.data());
+        const VkDeviceSize zero = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &host->vertices.buffer, &zero);
+        vkCmdDraw(cmd, host->vertexCount, 1, 0, 0);
+    } else {
+        renderer.recordGround(cmd, slot);
+    }
+    // The renderer binds its own pipelines and state; a host rebinds its own after it.
+    renderer.recordCharacters(cmd, slot);
+    vkCmdEndRendering(cmd);
+}
+
+// The ID pass over the renderer's output, tested against the colour pass's depth so only visible
+// characters get an ID.
+void recordIdPass(VkCommandBuffer cmd, const Target& target, const crowdgpu::Renderer& renderer,
+                  const HostDrawing& host, const std::array<float, 16>& viewProjection) {
+    barrier(cmd, target.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, kFragmentTests,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kFragmentTests, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    VkRenderingAttachmentInfo ids = attachment(target.ids.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                               VK_ATTACHMENT_LOAD_OP_CLEAR,  // 0: no character
+                                               VK_ATTACHMENT_STORE_OP_STORE);
+    VkRenderingAttachmentInfo depth = attachment(target.depth.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                                 VK_ATTACHMENT_LOAD_OP_LOAD,
+                                                 VK_ATTACHMENT_STORE_OP_NONE);  // read only here
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, target.extent};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &ids;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    const crowdgpu::FrameOutput out = renderer.output();
+    if (out.skinned) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, host.id);
+        setViewportAndScissor(cmd, target.extent);
+        vkCmdPushConstants(cmd, host.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof viewProjection,
+                           viewProjection.data());
+        vkCmdBindVertexBuffers(cmd, 0, 1, &out.vertices, &out.positionsOffset);
+        vkCmdBindIndexBuffer(cmd, out.indices, 0, VK_INDEX_TYPE_UINT32);
+        // The renderer's own draws after culling and LOD: one per visible character.
+        vkCmdDrawIndexedIndirectCount(cmd, out.draws, 0, out.drawCount, out.drawCountOffset, out.maxDraws,
+                                      sizeof(VkDrawIndexedIndirectCommand));
+    }
+    vkCmdEndRendering(cmd);
+}
+
+// After the last frame: copies the colour image (and the ID image, when `ids` is given) to host memory.
+void recordReadback(VkCommandBuffer cmd, const Target& target, const Buffer& colour, const Buffer* ids) {
+    std::vector<std::pair<VkImage, VkBuffer>> copies{{target.color.image, colour.buffer}};
+    if (ids) copies.emplace_back(target.ids.image, ids->buffer);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {target.extent.width, target.extent.height, 1};
+    for (const auto& [image, buffer] : copies) {
+        barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+    }
+    VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+    toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &toHost;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+double nowMs() {
+    using namespace std::chrono;
+    return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string outDir = argc > 1 ? argv[1] : ".";
-    VkExtent2D extent{640, 360};
-    if (argc > 2 && std::sscanf(argv[2], "%ux%u", &extent.width, &extent.height) != 2)
-        fail("size must be WIDTHxHEIGHT, e.g. 640x360");
-    const int frameCount = argc > 3 ? std::atoi(argv[3]) : 8;
-    if (extent.width == 0 || extent.height == 0 || frameCount < 1) fail("size and frames must be positive");
+    Options options;
+    try {
+        options = parseOptions(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        std::fprintf(stderr, "embed_headless: %s\n%s", error.what(), usage());
+        return 1;
+    }
+    const VkExtent2D extent = options.extent;
     const char* validationEnv = std::getenv("CROWDGPU_VALIDATION");
     const bool validation = validationEnv && std::strcmp(validationEnv, "1") == 0;
 
     Gpu gpu;
     createInstance(gpu, validation);
-    pickDevice(gpu);
+    pickDevice(gpu, options.device);
     createDevice(gpu);
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -447,14 +630,15 @@ int main(int argc, char** argv) {
     for (VkFence& fence : fences) CHECK(vkCreateFence(gpu.device, &fenceInfo, nullptr, &fence));
 
     // The host's target: colour, depth (shared by both passes) and the ID image.
-    Image color = createImage(gpu, extent, kColorFormat,
+    Target target{extent,
+                  createImage(gpu, extent, kColorFormat,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                              VK_IMAGE_ASPECT_COLOR_BIT);
-    Image depth = createImage(gpu, extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                              VK_IMAGE_ASPECT_DEPTH_BIT);
-    Image ids = createImage(gpu, extent, kIdFormat,
-                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                            VK_IMAGE_ASPECT_COLOR_BIT);
+                              VK_IMAGE_ASPECT_COLOR_BIT),
+                  createImage(gpu, extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                              VK_IMAGE_ASPECT_DEPTH_BIT),
+                  createImage(gpu, extent, kIdFormat,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT)};
     const VkDeviceSize pixelBytes = VkDeviceSize(extent.width) * extent.height * 4;
     Buffer colorReadback = createHostBuffer(gpu, pixelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     Buffer idReadback = createHostBuffer(gpu, pixelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -462,13 +646,11 @@ int main(int argc, char** argv) {
     int status = 0;
     try {
         // The crowd (Vulkan-free) and the renderer on the host's device, for the host's formats.
-        crowdgpu::GridLayout layout;
-        layout.count = 64;
-        crowdgpu::Crowd crowd = crowdgpu::Crowd::grid({crowdgpu::Model::soldier()}, layout);
+        crowdgpu::Crowd crowd = makeCrowd(options.count);
         crowdgpu::RendererSettings settings;
         settings.target.color = kColorFormat;
         settings.target.depth = kDepthFormat;
-        settings.method = crowdgpu::Method::Compute;  // skins into a buffer: output() has the vertices
+        settings.method = options.method;  // Compute, the default, skins into a buffer: output() has the vertices
         settings.framesInFlight = kFramesInFlight;
         const crowdgpu::Device device{gpu.instance, gpu.physicalDevice, gpu.device, gpu.queueFamily, &gpu.features};
         crowdgpu::Renderer renderer(device, crowd, settings);
@@ -490,37 +672,25 @@ int main(int argc, char** argv) {
             renderer.setupCompleted();
         }
 
-        // The camera: three-quarter view of the crowd's ground.
-        float center[3], radius, tallest;
-        crowd.bounds(center, radius, tallest);
-        const float target[3] = {center[0], center[1] + 0.4f * tallest, center[2]};
-        const float eye[3] = {center[0] + 0.5f * radius, center[1] + 1.1f * radius + tallest,
-                              center[2] + 1.8f * radius + 2.0f * tallest};
-        const float fov = 0.8f;  // radians, vertical
-
-        // The host's geometry: ground around the crowd, two boxes in front of it and one behind.
-        std::vector<SceneVertex> vertices;
-        const float g = 1.6f * radius + 2.0f * tallest;
-        addQuad(vertices,
-                {{center[0] - g, 0, center[2] - g}, {center[0] + g, 0, center[2] - g},
-                 {center[0] + g, 0, center[2] + g}, {center[0] - g, 0, center[2] + g}},
-                kGround, 1.0f);
-        addBox(vertices, center[0] - 0.55f * radius, center[2] + radius + 1.0f, 1.2f, 1.2f);
-        addBox(vertices, center[0] + 0.55f * radius, center[2] + radius + 1.0f, 1.2f, 1.2f);
-        addBox(vertices, center[0], center[2] - radius - 2.0f, 2.0f, 3.0f);
-        Buffer sceneVertices = createHostBuffer(gpu, vertices.size() * sizeof(SceneVertex),
-                                                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        std::memcpy(sceneVertices.mapped, vertices.data(), vertices.size() * sizeof(SceneVertex));
+        // GPU time per part of the frame: the renderer's passes (its observer marks each as it ends),
+        // then the colour pass ("draw", where the crowd's work ends) and the host's ID pass ("id").
+        FrameTimer timer(gpu.physicalDevice, gpu.device, gpu.queueFamily, kFramesInFlight);
+        renderer.setPassObserver([&timer](VkCommandBuffer cmd, const char* pass) { timer.mark(cmd, pass); });
+        TimingReport report("draw");
 
         // Two pipelines of the host's: the scene (into the colour pass) and the ID pass.
+        const std::vector<SceneVertex> vertices = hostGeometry(crowd);
+        HostDrawing host;
+        host.vertexCount = static_cast<std::uint32_t>(vertices.size());
+        host.vertices = createHostBuffer(gpu, vertices.size() * sizeof(SceneVertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        std::memcpy(host.vertices.mapped, vertices.data(), vertices.size() * sizeof(SceneVertex));
         VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, 16 * sizeof(float)};
         VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         layoutInfo.pushConstantRangeCount = 1;
         layoutInfo.pPushConstantRanges = &push;
-        VkPipelineLayout pipelineLayout;
-        CHECK(vkCreatePipelineLayout(gpu.device, &layoutInfo, nullptr, &pipelineLayout));
-        const VkPipeline scenePipeline = createPipeline(
-            gpu, pipelineLayout,
+        CHECK(vkCreatePipelineLayout(gpu.device, &layoutInfo, nullptr, &host.layout));
+        host.scene = createPipeline(
+            gpu, host.layout,
             {scene_vert_spv, sizeof scene_vert_spv, scene_frag_spv, sizeof scene_frag_spv,
              {0, sizeof(SceneVertex), VK_VERTEX_INPUT_RATE_VERTEX},
              {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(SceneVertex, position)},
@@ -528,174 +698,109 @@ int main(int argc, char** argv) {
              kColorFormat, true, VK_COMPARE_OP_LESS});
         // The crowd's skinned positions are vec4s, 16 bytes apart (normals, also vec4, follow at
         // output().normalsOffset; this pass does not need them).
-        const VkPipeline idPipeline = createPipeline(
-            gpu, pipelineLayout,
+        host.id = createPipeline(
+            gpu, host.layout,
             {id_vert_spv, sizeof id_vert_spv, id_frag_spv, sizeof id_frag_spv,
              {0, 4 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX},
              {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}},
              kIdFormat, false, VK_COMPARE_OP_LESS_OR_EQUAL});
+        const HostDrawing* hostDrawing = options.crowdOnly ? nullptr : &host;
 
-        const VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0, 1};
-        const VkRect2D scissor{{0, 0}, extent};
-        for (int frame = 0; frame < frameCount; ++frame) {
+        // Warm-up frames, then the timed ones. A slot's timings are read once its fence has signalled,
+        // just before the slot is recorded again (and for the last frames, at the end).
+        const std::uint32_t frameCount = options.warmup + options.frames;
+        std::vector<double> frameStarts(frameCount);
+        std::array<std::int64_t, kFramesInFlight> frameInSlot;
+        frameInSlot.fill(-1);
+        auto collect = [&](std::uint32_t slot) {
+            const std::int64_t frame = std::exchange(frameInSlot[slot], -1);
+            if (frame < static_cast<std::int64_t>(options.warmup)) return;  // none, or a warm-up frame
+            const double interval = frame > 0 ? frameStarts[frame] - frameStarts[frame - 1] : 0.0;
+            report.add(timer.read(slot), interval, renderer.counts(slot));
+        };
+        for (std::uint32_t frame = 0; frame < frameCount; ++frame) {
             const std::uint32_t slot = frame % kFramesInFlight;
             const bool last = frame == frameCount - 1;
-            const float time = frame / 30.0f;
+            const float time = frameTime(frame, options.start);
+            frameStarts[frame] = nowMs();
             // Wait for this slot's previous frame: its command buffer and the renderer's slot are free.
             CHECK(vkWaitForFences(gpu.device, 1, &fences[slot], VK_TRUE, UINT64_MAX));
+            collect(slot);
             CHECK(vkResetFences(gpu.device, 1, &fences[slot]));
             crowd.advanceTo(time);
-            const crowdgpu::FrameView view = crowdgpu::lookAt(eye, target, fov, 0.1f, 20.0f * radius, extent, time);
+            const CameraPose camera = cameraAt(options.scene, crowd, time);
+            const crowdgpu::FrameView view = crowdgpu::lookAt(camera.eye, camera.target, camera.verticalFov,
+                                                              camera.nearPlane, camera.farPlane, extent, time);
             const std::array<float, 16> viewProjection = multiply(view.projection, view.view);
 
             VkCommandBuffer cmd = commands[slot];
             VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
             begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
             CHECK(vkBeginCommandBuffer(cmd, &begin));
-
+            timer.begin(cmd, slot);
             // 1. The crowd's compute work and shadows, outside any pass.
             renderer.recordCompute(cmd, slot, view);
             renderer.recordShadows(cmd, slot);
-
-            // 2. The colour pass: the host's ground and boxes, then the crowd. The images are shared by
-            //    both slots: wait for the previous frame's writes before clearing them.
-            const VkPipelineStageFlags2 fragmentTests =
-                VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-            for (VkImage image : {color.image, ids.image})
-                barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
-                        VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-            barrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, fragmentTests,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, fragmentTests,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
-                    VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-
-            VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            colorAttachment.imageView = color.view;
-            colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            std::memcpy(colorAttachment.clearValue.color.float32, kSky, sizeof kSky);
-            VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            depthAttachment.imageView = depth.view;
-            depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-            depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;  // the ID pass tests against it
-            depthAttachment.clearValue.depthStencil = {1.0f, 0};      // crowdgpu: depth 1 is far, LESS
-            VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-            rendering.renderArea = scissor;
-            rendering.layerCount = 1;
-            rendering.colorAttachmentCount = 1;
-            rendering.pColorAttachments = &colorAttachment;
-            rendering.pDepthAttachment = &depthAttachment;
-            vkCmdBeginRendering(cmd, &rendering);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scenePipeline);
-            vkCmdSetViewport(cmd, 0, 1, &viewport);
-            vkCmdSetScissor(cmd, 0, 1, &scissor);
-            vkCmdPushConstants(cmd, pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof viewProjection,
-                               viewProjection.data());
-            const VkDeviceSize zero = 0;
-            vkCmdBindVertexBuffers(cmd, 0, 1, &sceneVertices.buffer, &zero);
-            vkCmdDraw(cmd, static_cast<std::uint32_t>(vertices.size()), 1, 0, 0);
-            // The renderer binds its own pipelines and state; the host rebinds its own after it.
-            renderer.recordCharacters(cmd, slot);
-            vkCmdEndRendering(cmd);
-
-            // 3. The ID pass over the renderer's output, tested against the colour pass's depth so only
-            //    visible characters get an ID.
-            barrier(cmd, depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, fragmentTests,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, fragmentTests,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-            VkRenderingAttachmentInfo idAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            idAttachment.imageView = ids.view;
-            idAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            idAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // 0: no character
-            idAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-            depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_NONE;  // read only here
-            rendering.pColorAttachments = &idAttachment;
-            vkCmdBeginRendering(cmd, &rendering);
-            const crowdgpu::FrameOutput out = renderer.output();
-            if (out.skinned) {
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, idPipeline);
-                vkCmdSetViewport(cmd, 0, 1, &viewport);
-                vkCmdSetScissor(cmd, 0, 1, &scissor);
-                vkCmdPushConstants(cmd, pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof viewProjection,
-                                   viewProjection.data());
-                vkCmdBindVertexBuffers(cmd, 0, 1, &out.vertices, &out.positionsOffset);
-                vkCmdBindIndexBuffer(cmd, out.indices, 0, VK_INDEX_TYPE_UINT32);
-                // The renderer's own draws after culling and LOD: one per visible character.
-                vkCmdDrawIndexedIndirectCount(cmd, out.draws, 0, out.drawCount, out.drawCountOffset, out.maxDraws,
-                                              sizeof(VkDrawIndexedIndirectCommand));
+            // 2. The colour pass: the host's ground and boxes (or the library's ground), then the crowd.
+            recordColourPass(cmd, target, renderer, slot, hostDrawing, viewProjection);
+            timer.mark(cmd, "draw");
+            // 3. The host's ID pass over the renderer's output.
+            if (hostDrawing) {
+                recordIdPass(cmd, target, renderer, *hostDrawing, viewProjection);
+                timer.mark(cmd, "id");
             }
-            vkCmdEndRendering(cmd);
-
             // 4. After the last frame: copy colour and IDs to host memory.
-            if (last) {
-                for (VkImage image : {color.image, ids.image})
-                    barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                            VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-                VkBufferImageCopy region{};
-                region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                region.imageExtent = {extent.width, extent.height, 1};
-                vkCmdCopyImageToBuffer(cmd, color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, colorReadback.buffer, 1,
-                                       &region);
-                vkCmdCopyImageToBuffer(cmd, ids.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, idReadback.buffer, 1,
-                                       &region);
-                VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-                toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-                toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-                toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-                toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-                VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-                dependency.memoryBarrierCount = 1;
-                dependency.pMemoryBarriers = &toHost;
-                vkCmdPipelineBarrier2(cmd, &dependency);
-            }
+            if (last) recordReadback(cmd, target, colorReadback, hostDrawing ? &idReadback : nullptr);
             CHECK(vkEndCommandBuffer(cmd));
             VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
             submit.commandBufferCount = 1;
             submit.pCommandBuffers = &cmd;
             CHECK(vkQueueSubmit(gpu.queue, 1, &submit, fences[slot]));
+            frameInSlot[slot] = frame;
         }
         // Wait for every slot's last frame (not vkDeviceWaitIdle: the fences say it all).
         CHECK(vkWaitForFences(gpu.device, kFramesInFlight, fences.data(), VK_TRUE, UINT64_MAX));
+        for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) collect(slot);
 
-        // The outputs and a summary of what the ID image shows.
-        const auto* bgra = static_cast<const std::uint8_t*>(colorReadback.mapped);
-        const auto* idPixels = static_cast<const std::uint32_t*>(idReadback.mapped);
-        writePpm(outDir + "/crowd.ppm", extent, bgra);
-        writePgm16(outDir + "/ids.pgm", extent, idPixels);
-        std::set<std::uint32_t> seen;
-        std::uint64_t crowdPixels = 0;
-        for (std::uint32_t i = 0; i < extent.width * extent.height; ++i)
-            if (idPixels[i] != 0) seen.insert(idPixels[i]), ++crowdPixels;
+        // The outputs and a summary of what the last frame and the ID image show.
+        writePpm(options.outDir + "/crowd.ppm", extent, static_cast<const std::uint8_t*>(colorReadback.mapped));
         const crowdgpu::FrameCounts counts = renderer.counts((frameCount - 1) % kFramesInFlight);
-        std::printf("%s: %ux%u, %d frames, %u characters drawn (LOD %u/%u/%u), %zu distinct ids, %llu crowd pixels\n",
-                    outDir.c_str(), extent.width, extent.height, frameCount,
-                    counts.characters[0] + counts.characters[1] + counts.characters[2], counts.characters[0],
-                    counts.characters[1], counts.characters[2], seen.size(),
-                    static_cast<unsigned long long>(crowdPixels));
+        std::printf("%s: %s, %u characters, %s, %ux%u, %u+%u frames, %u characters drawn (LOD %u/%u/%u)",
+                    options.outDir.c_str(), sceneName(options.scene), crowd.size(),
+                    options.crowdOnly ? "crowd only" : "with the host's boxes and ID pass", extent.width, extent.height,
+                    options.warmup, options.frames, counts.characters[0] + counts.characters[1] + counts.characters[2],
+                    counts.characters[0], counts.characters[1], counts.characters[2]);
+        if (hostDrawing) {
+            const auto* idPixels = static_cast<const std::uint32_t*>(idReadback.mapped);
+            writePgm16(options.outDir + "/ids.pgm", extent, idPixels);
+            std::set<std::uint32_t> seen;
+            std::uint64_t crowdPixels = 0;
+            for (std::uint32_t i = 0; i < extent.width * extent.height; ++i)
+                if (idPixels[i] != 0) seen.insert(idPixels[i]), ++crowdPixels;
+            std::printf(", %zu distinct ids, %llu crowd pixels", seen.size(),
+                        static_cast<unsigned long long>(crowdPixels));
+        }
+        std::printf("\n");
+        report.print(stdout);
 
-        vkDestroyPipeline(gpu.device, idPipeline, nullptr);
-        vkDestroyPipeline(gpu.device, scenePipeline, nullptr);
-        vkDestroyPipelineLayout(gpu.device, pipelineLayout, nullptr);
-        destroy(gpu, sceneVertices);
-        // The renderer (and then the crowd) go here, before the device.
+        vkDestroyPipeline(gpu.device, host.id, nullptr);
+        vkDestroyPipeline(gpu.device, host.scene, nullptr);
+        vkDestroyPipelineLayout(gpu.device, host.layout, nullptr);
+        destroy(gpu, host.vertices);
+        // The timer, the renderer (and then the crowd) go here, before the device.
     } catch (const crowdgpu::Error& error) {
         std::fprintf(stderr, "embed_headless: crowdgpu: %s\n", error.what());
+        status = 1;
+    } catch (const std::runtime_error& error) {  // the frame timer's
+        std::fprintf(stderr, "embed_headless: %s\n", error.what());
         status = 1;
     }
 
     destroy(gpu, idReadback);
     destroy(gpu, colorReadback);
-    destroy(gpu, ids);
-    destroy(gpu, depth);
-    destroy(gpu, color);
+    destroy(gpu, target.ids);
+    destroy(gpu, target.depth);
+    destroy(gpu, target.color);
     for (VkFence fence : fences) vkDestroyFence(gpu.device, fence, nullptr);
     vkDestroyCommandPool(gpu.device, pool, nullptr);
     vkDestroyDevice(gpu.device, nullptr);

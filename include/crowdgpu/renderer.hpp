@@ -99,6 +99,7 @@ struct RendererSettings {
     bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
     float impostorThreshold = 32.0f;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
+                                         // (beyond it, the smallest on screen become impostors)
     bool shadows = true;
     std::uint32_t shadowMapSize = 2048;
     std::uint32_t framesInFlight = 2;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crowd/farthest_first.h"
+
 namespace crowd {
 
 std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
@@ -53,35 +55,51 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
     return std::clamp(previous - 1u, finest, coarsest);
 }
 
+namespace {
+
+// A character that qualifies for a mesh level: in view (or a caster), at LOD 0-2.
+struct MeshCandidate {
+    std::uint32_t bucket;
+    bool drawnIfDemoted;  // in view: drawn as an impostor if the cap demotes it
+};
+
+}  // namespace
+
 VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::CharacterRecord> characters,
                        std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState,
-                       std::vector<std::uint32_t>* impostors) {
+                       std::vector<std::uint32_t>* impostors, std::uint32_t* demoted) {
     VisibleLists lists(models.size() * LOD_COUNT);
-    std::uint32_t meshCount = 0;
-    auto appendImpostor = [&](std::uint32_t c, const glm::vec4& sphere) {
-        if (impostors && (cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere))) impostors->push_back(c);
-    };
+    std::vector<MeshCandidate> candidates;
+    std::vector<SizedCharacter> sizes;
+    // Impostors cast no shadow, so only those in view are kept.
+    auto drawnAsImpostor = [&](const glm::vec4& sphere) { return cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere); };
     for (std::uint32_t c = 0; c < characters.size(); ++c) {
         const gpu::CharacterRecord& character = characters[c];
         const glm::vec4 sphere = worldSphere(character, models[character.ids.x]);
         const bool visible = cull.flags.y == 0u ||
                              (cull.limits.y != 0u ? casterInFrustum(cull.planes, sphere, glm::vec3(cull.light))
                                                   : sphereInFrustum(cull.planes, sphere));
+        const float size = projectedDiameter(sphere, cull.camera);
         std::uint32_t lod = 0;
-        if (cull.flags.z != 0u) lod = chooseLod(projectedDiameter(sphere, cull.camera), lodState[c], cull.lod);
+        if (cull.flags.z != 0u) lod = chooseLod(size, lodState[c], cull.lod);
         lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
         if (lod == IMPOSTOR_LEVEL) {
-            appendImpostor(c, sphere);
+            if (impostors && drawnAsImpostor(sphere)) impostors->push_back(c);
             continue;
         }
         if (!visible) continue;
-        // The cap in character order (the GPU's order is its atomics').
-        if (cull.limits.z != 0u && meshCount++ >= cull.limits.z) {
-            appendImpostor(c, sphere);
-            continue;
-        }
-        lists[character.ids.x * LOD_COUNT + lod].push_back(c);
+        candidates.push_back({character.ids.x * LOD_COUNT + lod, drawnAsImpostor(sphere)});
+        sizes.push_back({c, size});
     }
+    // Over the cap, the smallest on screen are demoted (crowd/farthest_first.h).
+    const std::vector<bool> kept = cull.limits.z != 0u ? keepsMesh(sizes, cull.limits.z)
+                                                       : std::vector<bool>(candidates.size(), true);
+    if (demoted) *demoted = static_cast<std::uint32_t>(std::count(kept.begin(), kept.end(), false));
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (kept[i]) lists[candidates[i].bucket].push_back(sizes[i].character);
+        else if (impostors && candidates[i].drawnIfDemoted) impostors->push_back(sizes[i].character);
+    }
+    if (impostors) std::sort(impostors->begin(), impostors->end());
     return lists;
 }
 

@@ -28,10 +28,12 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
 using VisibleLists = std::vector<std::vector<std::uint32_t>>;
 
 // Culls and picks levels for every character as the GPU pass does. `lodState` holds each character's
-// last level + 1 (0: none yet) and is updated, as the GPU keeps it. Characters at the impostor level
-// (or over the mesh-level cap, cull.limits.z) that are in view go to `impostors` when given.
+// last level + 1 (0: none yet) and is updated, as the GPU keeps it. With a mesh-level cap
+// (cull.limits.z), the characters beyond it are demoted smallest on screen first
+// (crowd/farthest_first.h); `demoted` counts them when given. Characters at the impostor level or
+// demoted that are in view go to `impostors` when given, in character order.
 VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::CharacterRecord> characters,
                        std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState,
-                       std::vector<std::uint32_t>* impostors = nullptr);
+                       std::vector<std::uint32_t>* impostors = nullptr, std::uint32_t* demoted = nullptr);
 
 }  // namespace crowd

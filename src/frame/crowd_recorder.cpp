@@ -247,13 +247,16 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
 
 std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
     const double n = std::max(crowd_.size(), 1u);
+    // The mesh cut's lists and tie bits grow with the crowd; its histograms do not.
+    const render::MeshCutSizes cut = render::meshCutSizes(crowd_.size(), lists_.meshCapacity());
     const double state = static_cast<double>(buffers_.characters().size + animationPass_.segmentBytes() +
                                              lists_.lodState().size + lists_.impostorList().size +
-                                             lists_.characterDraws().size);
+                                             lists_.characterDraws().size + cut.candidates + cut.boundary +
+                                             cut.tieBits);
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
     const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
-                                             (impostorDraw_ ? impostorDraw_->bytes() : 0u));
+                                             (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms);
     return {{"state", state / n},
             {"bones", static_cast<double>(buffers_.bones().size) / n},
             {"mesh slots", meshSlots / n},

@@ -26,6 +26,9 @@ static_assert(sizeof(DrawTotals) == 32 && offsetof(DrawTotals, emitDispatch) == 
 static_assert(sizeof(ImpostorModel) == 48 && offsetof(ImpostorModel, views) == 16 && offsetof(ImpostorModel, square) == 32);
 // Written with atomics, one uint at a time; the draws follow the header as VkDrawIndexedIndirectCommands.
 static_assert(sizeof(ImpostorFrame) == 16 && offsetof(ImpostorFrame, demoted) == 8);
+// splitDispatch is read by vkCmdDispatchIndirect; the one-workgroup scans split each histogram evenly.
+static_assert(sizeof(MeshCut) == 32 && offsetof(MeshCut, splitDispatch) == 16);
+static_assert(MESH_CUT_COARSE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0 && MESH_CUT_FINE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0);
 static_assert(sizeof(ImpostorDrawsHeader) == 16);
 static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160);

@@ -83,8 +83,10 @@ CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd
                          gpu::ErrorKind::OutOfDeviceMemory);
     records_ = characterRecords(crowd, layout_.offsets);
     try {
+        // Transfer source too: tests read back the records the motion pass wrote.
         characters_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),
-                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                                 "character records");
         bones_ = gpu::createBuffer(context, boneBytes,
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |

@@ -6,8 +6,11 @@
 
 #include "crowd/cull_reference.h"
 #include "cull.comp.spv.h"
+#include "cull_cutoff.comp.spv.h"
 #include "cull_emit.comp.spv.h"
 #include "cull_finalize.comp.spv.h"
+#include "cull_resolve.comp.spv.h"
+#include "cull_split.comp.spv.h"
 #include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
@@ -80,7 +83,8 @@ CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, 
             {storage, lists.totals().buffer},            {storage, lists.bucketDraws().buffer},
             {storage, lists.skinDispatches().buffer},    {storage, lists.draws().buffer},
             {storage, lists.characterDraws().buffer},    {storage, lists.impostorFrame().buffer},
-            {storage, lists.impostorList().buffer}};
+            {storage, lists.impostorList().buffer},      {storage, lists.meshCut().buffer},
+            {storage, lists.meshCandidates().buffer},    {storage, lists.meshBoundary().buffer}};
         descriptors_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
         const VkDescriptorSetLayout setLayout = descriptors_->layout();
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(EmitPush)};
@@ -88,6 +92,9 @@ CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, 
         cull_ = createPipeline(cull_comp_spv);
         finalize_ = createPipeline(cull_finalize_comp_spv);
         emit_ = createPipeline(cull_emit_comp_spv);
+        cutoff_ = createPipeline(cull_cutoff_comp_spv);
+        split_ = createPipeline(cull_split_comp_spv);
+        resolve_ = createPipeline(cull_resolve_comp_spv);
     } catch (...) {
         release();
         throw;
@@ -97,7 +104,7 @@ CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, 
 CullPass::~CullPass() { release(); }
 
 void CullPass::release() {
-    for (VkPipeline* p : {&emit_, &finalize_, &cull_}) {
+    for (VkPipeline* p : {&resolve_, &split_, &cutoff_, &emit_, &finalize_, &cull_}) {
         if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
     }
@@ -120,6 +127,8 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     vkCmdFillBuffer(cmd, lists_.bucketFrames().buffer, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, lists_.impostorFrame().buffer, 0, VK_WHOLE_SIZE, 0);
     if (characterDraws) vkCmdFillBuffer(cmd, lists_.characterDraws().buffer, 0, VK_WHOLE_SIZE, 0);
+    const bool meshCut = uniforms.limits.z != 0u && mode != CullMode::Cpu;
+    if (meshCut) vkCmdFillBuffer(cmd, lists_.meshCut().buffer, 0, VK_WHOLE_SIZE, 0);  // histograms and tie bits
     if (mode == CullMode::Cpu) recordCpuCulling(cmd, frameSlot, uniforms);
     gpu::memoryBarrier(cmd, kTransferWrite, kComputeWrite);
 
@@ -134,6 +143,7 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
         vkCmdDispatch(cmd, std::clamp(groups, 1u, uniforms.limits.x), 1, 1);
         gpu::memoryBarrier(cmd, kComputeWrite, kComputeWrite);
     }
+    if (meshCut) recordMeshCut(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, finalize_);
     vkCmdDispatch(cmd, 1, 1, 1);
     gpu::memoryBarrier(cmd, kComputeWrite,
@@ -151,11 +161,30 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     vkCmdCopyBuffer(cmd, lists_.impostorFrame().buffer, lists_.readback(frameSlot).buffer, 1, &impostors);
 }
 
+void CullPass::recordMeshCut(VkCommandBuffer cmd) {
+    // Three dispatches, each reading what the previous wrote: the cut's coarse bucket (one workgroup),
+    // every candidate judged against it (indirect: only the GPU knows how many), the cut's bucket
+    // resolved to the exact size and index (one workgroup).
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cutoff_);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    gpu::memoryBarrier(cmd, kComputeWrite,
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                            VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, split_);
+    vkCmdDispatchIndirect(cmd, lists_.meshCut().buffer, offsetof(gpu::MeshCut, splitDispatch));
+    gpu::memoryBarrier(cmd, kComputeWrite, kComputeWrite);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_);
+    vkCmdDispatch(cmd, 1, 1, 1);
+    gpu::memoryBarrier(cmd, kComputeWrite, kComputeWrite);
+}
+
 void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms) {
     cpuLodState_.resize(lists_.characterCount(), 0u);
     std::vector<std::uint32_t> impostorList;
+    std::uint32_t demoted = 0;
     const crowd::VisibleLists visible =
-        crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_, &impostorList);
+        crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_, &impostorList, &demoted);
     const gpu::Buffer& staging = lists_.cpuStaging(frameSlot);
     auto* frames = static_cast<gpu::BucketFrame*>(staging.mapped);
     auto* list = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(staging.mapped) + lists_.bucketFrames().size);
@@ -173,6 +202,7 @@ void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, co
     const VkDeviceSize impostorBase = lists_.bucketFrames().size + lists_.visible().size;
     gpu::ImpostorFrame impostors{};
     impostors.count = static_cast<std::uint32_t>(impostorList.size());
+    impostors.demoted = demoted;
     std::byte* base = static_cast<std::byte*>(staging.mapped) + impostorBase;
     std::memcpy(base, &impostors, sizeof impostors);
     std::copy(impostorList.begin(), impostorList.end(), reinterpret_cast<std::uint32_t*>(base + sizeof impostors));

@@ -2,7 +2,10 @@
 // Culling and level of detail for a frame, on the GPU (or, for reference, on the CPU), then the prefix
 // sums and the indirect commands that the skinning and draw passes consume (render/draw_lists.h).
 // Three compute dispatches: cull (one thread per character), finalize (one thread: bucket bases),
-// emit (one thread per visible character: its draw command).
+// emit (one thread per visible character: its draw command). With a mesh-level cap, three more between
+// cull and finalize decide which candidates keep their meshes, farthest demoted first
+// (shaders/mesh_cut.glsl.inc): cutoff (one workgroup), split (one thread per candidate), resolve (one
+// workgroup).
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -68,6 +71,7 @@ public:
 
 private:
     void recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms);
+    void recordMeshCut(VkCommandBuffer cmd);
     VkPipeline createPipeline(std::span<const std::uint32_t> spirv);
     void release();
 
@@ -80,6 +84,7 @@ private:
     std::unique_ptr<gpu::DescriptorBundle> descriptors_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline cull_ = VK_NULL_HANDLE, finalize_ = VK_NULL_HANDLE, emit_ = VK_NULL_HANDLE;
+    VkPipeline cutoff_ = VK_NULL_HANDLE, split_ = VK_NULL_HANDLE, resolve_ = VK_NULL_HANDLE;  // the mesh cut
     std::vector<std::uint32_t> cpuLodState_;
 };
 

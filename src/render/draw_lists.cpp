@@ -57,11 +57,13 @@ std::vector<gpu::BucketRecord> planBuckets(const gpu::VulkanContext& context, co
 
 std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity) {
     // Per character: the baseline's draw command, the LOD state and the impostor list entry; per
-    // mesh-level character (all, without a cap): visible-list entries (one per LOD) and a draw command.
+    // mesh-level character (all, without a cap): visible-list entries (one per LOD) and a draw command;
+    // with a cap, the cut's histograms and per-character lists.
     const std::uint64_t meshLevel = meshCapacity > 0 ? std::min<std::uint64_t>(characters, meshCapacity) : characters;
     return characters * (sizeof(gpu::DrawIndexedCommand) + 4 + 4) +
            meshLevel * (LOD_COUNT * 4 + sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
-           buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + sizeof(gpu::DrawIndexedCommand) + 16);
+           buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + sizeof(gpu::DrawIndexedCommand) + 16) +
+           meshCutSizes(characters, meshCapacity).total();
 }
 
 DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
@@ -96,6 +98,12 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
         lodState_ = gpu::createBuffer(context, n * 4, filled, device, "LOD state");
         impostorFrame_ = gpu::createBuffer(context, sizeof(gpu::ImpostorFrame), indirect | filled, device, "impostor draw");
         impostorList_ = gpu::createBuffer(context, n * 4, filled, device, "impostor list");
+        const MeshCutSizes cut = meshCutSizes(characterCount_, meshCapacity_);
+        meshCut_ = gpu::createBuffer(context, cut.cutBuffer(), filled | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, device,
+                                     "mesh cut and size histograms");
+        meshCandidates_ = gpu::createBuffer(context, cut.candidates, storage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, device,
+                                            "mesh-level candidates");
+        meshBoundary_ = gpu::createBuffer(context, cut.boundary, storage, device, "mesh cut's boundary");
         gpu::runOneShot(context, [state = lodState_.buffer](VkCommandBuffer cmd) {
             vkCmdFillBuffer(cmd, state, 0, VK_WHOLE_SIZE, 0);
         });
@@ -118,8 +126,9 @@ DrawLists::~DrawLists() { release(); }
 void DrawLists::release() {
     for (gpu::Buffer& buffer : cpuStaging_) gpu::destroyBuffer(context_, buffer);
     for (gpu::Buffer& buffer : readback_) gpu::destroyBuffer(context_, buffer);
-    for (gpu::Buffer* buffer : {&impostorList_, &impostorFrame_, &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_,
-                                &totals_, &bucketFrames_, &bucketRecords_})
+    for (gpu::Buffer* buffer : {&meshBoundary_, &meshCandidates_, &meshCut_, &impostorList_, &impostorFrame_, &lodState_,
+                                &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_, &totals_,
+                                &bucketFrames_, &bucketRecords_})
         gpu::destroyBuffer(context_, *buffer);
 }
 
@@ -151,8 +160,9 @@ LodCounts DrawLists::countsOf(std::uint32_t frameSlot) const {
 
 VkDeviceSize DrawLists::bytes() const {
     VkDeviceSize total = 0;
-    for (const gpu::Buffer* buffer : {&impostorList_, &impostorFrame_, &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_,
-                                      &visible_, &totals_, &bucketFrames_, &bucketRecords_})
+    for (const gpu::Buffer* buffer : {&meshBoundary_, &meshCandidates_, &meshCut_, &impostorList_, &impostorFrame_,
+                                      &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_,
+                                      &totals_, &bucketFrames_, &bucketRecords_})
         total += buffer->size;
     return total;
 }

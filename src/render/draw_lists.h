@@ -18,6 +18,7 @@
 #include "gpu_types.h"
 #include "render/crowd_buffers.h"
 #include "render/geometry_pool.h"
+#include "render/mesh_cut.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -43,7 +44,8 @@ class DrawLists {
 public:
     // `meshCapacity`: the most characters at a mesh level (LOD 0-2) in a frame, 0 for no cap. With a
     // cap, the skinned-vertex capacity, the draw list and each bucket's list are sized for it, not for
-    // the whole crowd; culling demotes the characters beyond it to impostors.
+    // the whole crowd; culling demotes the smallest on screen beyond it to impostors (the cut's buffers,
+    // render/mesh_cut.h).
     DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
               std::uint32_t framesInFlight, std::uint32_t meshCapacity = 0);
     ~DrawLists();
@@ -72,6 +74,11 @@ public:
     // The impostor level: its count and draw command (gpu::ImpostorFrame), and its list of characters.
     const gpu::Buffer& impostorFrame() const { return impostorFrame_; }
     const gpu::Buffer& impostorList() const { return impostorList_; }
+    // The mesh-level cap's cut (render/mesh_cut.h): the cut with its histograms and tie bits, the
+    // candidates, the members of the cut's coarse bucket.
+    const gpu::Buffer& meshCut() const { return meshCut_; }
+    const gpu::Buffer& meshCandidates() const { return meshCandidates_; }
+    const gpu::Buffer& meshBoundary() const { return meshBoundary_; }
     // The most mesh-level characters a frame draws: the draw list's length.
     std::uint32_t drawCapacity() const { return drawCapacity_; }
     std::uint32_t meshCapacity() const { return meshCapacity_; }
@@ -93,7 +100,7 @@ private:
     std::uint32_t meshCapacity_, drawCapacity_;
     std::uint64_t skinnedCapacity_, fixedCapacity_;  // set by planBuckets, before this line runs
     gpu::Buffer bucketRecords_, bucketFrames_, totals_, visible_, draws_, characterDraws_, bucketDraws_,
-        skinDispatches_, lodState_, impostorFrame_, impostorList_;
+        skinDispatches_, lodState_, impostorFrame_, impostorList_, meshCut_, meshCandidates_, meshBoundary_;
     std::vector<gpu::Buffer> readback_;
     std::vector<gpu::Buffer> cpuStaging_;
 };

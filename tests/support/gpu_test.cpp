@@ -185,6 +185,42 @@ std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::
     return bytes;
 }
 
+crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const TestRenderer& renderer) {
+    const render::DrawLists& lists = renderer.drawLists();
+    const std::vector<std::byte> frames = readBuffer(context, lists.bucketFrames());
+    const std::vector<std::byte> visible = readBuffer(context, lists.visible());
+    crowd::VisibleLists result(lists.bucketCount());
+    for (std::uint32_t b = 0; b < lists.bucketCount(); ++b) {
+        gpu::BucketFrame frame;
+        std::memcpy(&frame, frames.data() + b * sizeof frame, sizeof frame);
+        const std::byte* first = visible.data() + lists.buckets()[b].list.z * 4;
+        result[b].resize(frame.count);
+        std::memcpy(result[b].data(), first, frame.count * 4);
+        std::sort(result[b].begin(), result[b].end());
+    }
+    return result;
+}
+
+std::vector<std::uint32_t> readImpostorList(const gpu::VulkanContext& context, const TestRenderer& renderer) {
+    const render::DrawLists& lists = renderer.drawLists();
+    const std::vector<std::byte> frameBytes = readBuffer(context, lists.impostorFrame());
+    const std::vector<std::byte> listBytes = readBuffer(context, lists.impostorList());
+    gpu::ImpostorFrame frame;
+    std::memcpy(&frame, frameBytes.data(), sizeof frame);
+    std::vector<std::uint32_t> list(frame.count);
+    std::memcpy(list.data(), listBytes.data(), frame.count * 4);
+    std::sort(list.begin(), list.end());
+    return list;
+}
+
+std::vector<gpu::CharacterRecord> readCharacterRecords(const gpu::VulkanContext& context,
+                                                       const TestRenderer& renderer) {
+    const std::vector<std::byte> bytes = readBuffer(context, renderer.buffers().characters());
+    std::vector<gpu::CharacterRecord> records(renderer.buffers().characterCount());
+    std::memcpy(records.data(), bytes.data(), records.size() * sizeof(gpu::CharacterRecord));
+    return records;
+}
+
 std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
                                                      const TestRenderer& renderer) {
     const render::DrawLists& lists = renderer.drawLists();

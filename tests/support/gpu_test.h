@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "crowd/cull_reference.h"
 #include "app/crowd_renderer.h"
 #include "app/host_device.h"
 #include "app/options.h"
@@ -96,6 +97,14 @@ ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const re
 
 // A device buffer's bytes, copied to the host.
 std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::Buffer& buffer);
+
+// The last frame's visible lists, per bucket, sorted (the GPU's atomics append in any order).
+crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const TestRenderer& renderer);
+// The last frame's impostor list (impostor-level and demoted characters in view), sorted.
+std::vector<std::uint32_t> readImpostorList(const gpu::VulkanContext& context, const TestRenderer& renderer);
+// The character records the GPU culled from in the last frame (the motion pass writes them).
+std::vector<gpu::CharacterRecord> readCharacterRecords(const gpu::VulkanContext& context,
+                                                       const TestRenderer& renderer);
 
 // One character in the last frame's draw list: its level of detail and its skinned vertices.
 struct DrawnCharacter {

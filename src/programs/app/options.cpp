@@ -34,8 +34,9 @@ usage: crowd-render [options]
                           threshold are drawn as camera-facing quads from an atlas baked at load time
                           (default off)
   --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
-  --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame, the rest are
-                          drawn as impostors; sizes the skinned-vertex buffers (default 65536)
+  --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame; beyond N, the
+                          smallest on screen are drawn as impostors; sizes the skinned-vertex buffers
+                          (default 65536)
   --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
   --start SECONDS         scene time of the first frame: where on the camera path (and in the clips)
                           the run begins (default 0; at most 3600, and for march and mill at most
