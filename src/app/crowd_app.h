@@ -73,6 +73,6 @@ void checkCrowdFits(const gpu::VulkanContext& context, const crowd::Crowd& crowd
 render::CrowdShape crowdShape(const crowd::Crowd& crowd);
 
 // Animation time of frame `index`: a fixed 60 Hz step from `start` seconds, so runs are reproducible.
-inline float frameTime(std::uint32_t index, float start = 0.0f) { return start + static_cast<float>(index) / 60.0f; }
+inline double frameTime(std::uint32_t index, double start = 0.0) { return start + static_cast<double>(index) / 60.0; }
 
 }  // namespace app

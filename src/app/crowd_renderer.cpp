@@ -80,7 +80,7 @@ frame::CrowdRecorder& CrowdRenderer::recorder() const {
     return *renderer_.data().frame;  // the library's recorder behind the public handle
 }
 
-render::FrameView CrowdRenderer::view(float time) const { return render::frameViewOf(camera, target_->extent(), time); }
+render::FrameView CrowdRenderer::view(double time) const { return render::frameViewOf(camera, target_->extent(), time); }
 
 void CrowdRenderer::runSetup() {
     if (!renderer_.setupPending()) return;
@@ -90,7 +90,7 @@ void CrowdRenderer::runSetup() {
     setupMs_ += nowMs() - start;
 }
 
-void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
+void CrowdRenderer::renderFrame(double time, const PresentHooks* hooks) {
     const auto slot = static_cast<std::uint32_t>(frameIndex_++ % frames_.size());
     Frame& frame = frames_[slot];
     const double start = nowMs();
@@ -116,7 +116,7 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     frame.stats.recordMs = nowMs() - recordStart - frame.stats.animateMs;
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, const PresentHooks* hooks) {
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double time, const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
     const crowdgpu::FrameView host = [&] {
         const render::FrameView v = view(time);

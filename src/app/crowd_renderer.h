@@ -58,7 +58,7 @@ public:
     CrowdRenderer& operator=(const CrowdRenderer&) = delete;
 
     // Renders the crowd at animation time `time` seconds, seen by `camera`.
-    void renderFrame(float time, const PresentHooks* hooks = nullptr);
+    void renderFrame(double time, const PresentHooks* hooks = nullptr);
     // Recreates the offscreen target at a new size (waits for the GPU).
     void resize(VkExtent2D size);
     // Switches the skinning method (waits for the GPU).
@@ -90,7 +90,7 @@ public:
     VkExtent2D extent() const { return target_->extent(); }
     const render::CrowdShape& shape() const { return recorder().shape(); }
     // What the cull pass gets for the current camera and settings (the CPU reference takes the same).
-    gpu::CullUniforms cullUniforms() const { return recorder().cullUniforms(view(0.0f)); }
+    gpu::CullUniforms cullUniforms() const { return recorder().cullUniforms(view(0.0)); }
     // Device memory of the library's resources and the render target.
     std::vector<skin::MemoryItem> memory() const;
     // The library's per-character figures, the render target counted as fixed.
@@ -106,10 +106,10 @@ private:
         FrameStats stats;
     };
     frame::CrowdRecorder& recorder() const;
-    render::FrameView view(float time) const;
+    render::FrameView view(double time) const;
     void runSetup();
     void collect(Frame& frame, std::uint32_t slot);
-    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, const PresentHooks* hooks);
+    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double time, const PresentHooks* hooks);
     void submit(Frame& frame, const PresentHooks* hooks);
     void waitIdle();
 

@@ -37,7 +37,7 @@ struct RenderOptions {
     SceneOptions scene;
     render::CullSettings cull;
     render::CameraPath camera = render::CameraPath::Framed;
-    float startSeconds = 0.0f;  // scene time of the first frame (where on the camera path a run begins)
+    double startSeconds = 0.0;  // scene time of the first frame (where on the camera path a run begins)
     bool shadows = true;        // the directional light's shadow map
     skin::Method method = skin::Method::TwoPass;
     render::AnimationPath animation = render::AnimationPath::Gpu;  // where bone matrices are computed

@@ -25,7 +25,7 @@ crowd::Crowd millingCrowd(const CrowdModels& models, std::uint32_t count, std::u
 }
 
 // Median wall-clock milliseconds of `runs` CPU animations of the whole crowd on `pool`.
-double cpuPaletteMs(const crowd::Crowd& crowd, float time, crowd::WorkerPool& pool, std::uint32_t runs) {
+double cpuPaletteMs(const crowd::Crowd& crowd, double time, crowd::WorkerPool& pool, std::uint32_t runs) {
     std::vector<std::uint32_t> offsets(crowd.size());
     std::uint64_t rows = 0;
     for (std::uint32_t c = 0; c < crowd.size(); ++c) offsets[c] = static_cast<std::uint32_t>(rows), rows += crowd.library().jointCount(crowd.characters()[c].model);
@@ -34,7 +34,7 @@ double cpuPaletteMs(const crowd::Crowd& crowd, float time, crowd::WorkerPool& po
     std::vector<double> ms;
     for (std::uint32_t r = 0; r < runs; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        crowd.animate(time + 0.01f * static_cast<float>(r + 1), bones, offsets, {}, &pool);
+        crowd.animate(time + 0.01 * static_cast<double>(r + 1), bones, offsets, {}, &pool);
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     return median(ms);
@@ -57,7 +57,7 @@ void gpuPaletteMs(const gpu::VulkanContext& context, crowd::Crowd& crowd, const 
     renderer.passClock = options.clock;
     app::CrowdRenderer frames(context, crowd, renderer);
     const std::uint32_t total = options.warmup + options.frames;
-    for (std::uint32_t f = 0; f < total; ++f) frames.renderFrame(options.time + static_cast<float>(f) / 60.0f);
+    for (std::uint32_t f = 0; f < total; ++f) frames.renderFrame(options.time + static_cast<double>(f) / 60.0);
     frames.finish();
     const RunSummary summary = summarize(frames.stats(), options.warmup);
     row.gpuPaletteMs = summary.medianGpuMs.count("palette") ? summary.medianGpuMs.at("palette") : 0.0;

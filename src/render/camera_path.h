@@ -24,6 +24,7 @@ struct CrowdShape {
     float characterHeight = 1.0f;
 };
 
-Camera cameraOnPath(CameraPath path, const CrowdShape& crowd, float aspect, float seconds);
+// `seconds` is scene time, a double: the paths repeat, so only its place within a period matters.
+Camera cameraOnPath(CameraPath path, const CrowdShape& crowd, float aspect, double seconds);
 
 }  // namespace render
