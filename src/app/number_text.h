@@ -7,5 +7,6 @@ namespace app {
 
 // The shortest fixed-point text that reads back as `value` (no exponent, no trailing zeros).
 std::string formatNumber(float value);
+std::string formatNumber(double value);
 
 }  // namespace app
