@@ -5,6 +5,7 @@
 // 0 s (64 characters at 1e6 s: minutes) and time was a float (at 1e6 s, 62.5 ms steps).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <numbers>
 #include <string>
@@ -136,6 +137,18 @@ TEST(ClosedFormStart, EverySegmentStartsWhereTheLastLeftOffEarlyAndLate) {
         for (const char* model : {"soldier", "horse"}) {
             crowd::Crowd marching = march(model, 16);
             EXPECT_GT(expectSeamlessSegments(marching, from, from + 120.0), 5u * marching.size()) << model << " " << from;
+        }
+    }
+}
+
+TEST(ClosedFormStart, GltfCharactersLandOnEveryEpisodeToo) {
+    // Fox stands with its "Survey" clip; CesiumMan has only a walk, which it holds still to stand.
+    const std::filesystem::path root(CROWD_SHARED_ASSETS_DIR);
+    for (const char* file : {"fox/Fox.glb", "cesium-man/CesiumMan.glb"}) {
+        if (!std::filesystem::exists(root / file)) GTEST_SKIP() << "shared asset " << (root / file) << " not present";
+        for (const auto behaviour : {crowd::Behaviour::Mill, crowd::Behaviour::March}) {
+            crowd::Crowd crowd = livingCrowd((root / file).string(), behaviour, 32, 4);
+            EXPECT_GT(expectSeamlessSegments(crowd, 1e6, 1e6 + 150.0), 3u * crowd.size()) << file;
         }
     }
 }

@@ -185,8 +185,11 @@ void Crowd::restateRecords() {
     const bool everyone = epochOf(plannedTo_) != epoch_;
     epoch_ = epochOf(plannedTo_);
     if (everyone) std::fill(changed_.begin(), changed_.end(), 1u);
-    for (std::uint32_t c = 0; c < size(); ++c)
-        if (changed_[c]) segments_[c] = recordFrom(plans_[c], epoch_, library_, characters_[c].model);
+    // A new epoch restates every character (tens of nanoseconds each): on every core, as planning is.
+    WorkerPool::shared().parallelFor(size(), 4096, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t c = begin; c < end; ++c)
+            if (changed_[c]) segments_[c] = recordFrom(plans_[c], epoch_, library_, characters_[c].model);
+    });
 }
 
 void Crowd::advanceTo(double time) {
