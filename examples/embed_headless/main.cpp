@@ -540,7 +540,7 @@ int main(int argc, char** argv) {
         for (int frame = 0; frame < frameCount; ++frame) {
             const std::uint32_t slot = frame % kFramesInFlight;
             const bool last = frame == frameCount - 1;
-            const float time = frame / 30.0f;
+            const double time = frame / 30.0;  // scene time is a double in the API
             // Wait for this slot's previous frame: its command buffer and the renderer's slot are free.
             CHECK(vkWaitForFences(gpu.device, 1, &fences[slot], VK_TRUE, UINT64_MAX));
             CHECK(vkResetFences(gpu.device, 1, &fences[slot]));
