@@ -213,10 +213,13 @@ struct AnimationTrack {
 };
 
 // What a character does from a start time on: one segment of its motion, planned by the CPU
-// (crowd/motion.h), evaluated in closed form by the CPU and the GPU at any later time.
+// (crowd/motion.h), evaluated in closed form by the CPU and the GPU at any later time. Times are
+// seconds since the crowd's epoch (crowd/epoch.h), never scene time: scene time is a double, and a
+// segment that began long before the epoch reaches the GPU restated as where it is at the epoch
+// (crowd/segment.h), so every float here stays small at any scene time.
 struct MotionRecord {
     vec4 origin;  // xyz: position at the start, w: heading at the start (radians about +y)
-    vec4 timing;  // x: start time (s), y: crossfade duration (s; 0 = none), z: turn rate (rad/s),
+    vec4 timing;  // x: start time (s since the epoch), y: crossfade duration (s; 0 = none), z: turn rate (rad/s),
                   // w: how long the turn lasts (s)
     vec4 phase;   // x: normalized phase at the start (cycles), y: cycles per second of the clip faded
                   // from, z: of the clip faded to, w: 1 = root motion carries the character, 0 = in place
@@ -235,7 +238,7 @@ struct PalettePush {
 // Push constants of the motion pass.
 struct MotionPush {
     uvec4 counts;  // x: characters, y: most workgroups in a dispatch's x dimension, z, w: unused
-    vec4 time;     // x: seconds, yzw: unused
+    vec4 time;     // x: the frame's time in seconds since the crowd's epoch (crowd/epoch.h), yzw: unused
 };
 
 // Per-frame parameters of the cull pass, in a storage buffer (the frustum alone is 96 bytes). Not a

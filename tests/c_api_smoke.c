@@ -282,7 +282,7 @@ int main(void) {
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     for (uint32_t frame = 0; frame < FRAMES; ++frame) {
         const uint32_t slot = frame % FRAMES_IN_FLIGHT;
-        const float time = (float)frame / 30.0f;
+        const double time = (double)frame / 30.0;
         VK_CHECK(vkWaitForFences(device, 1, &fences[slot], VK_TRUE, UINT64_MAX));
         VK_CHECK(vkResetFences(device, 1, &fences[slot]));
         EXPECT(crowdgpu_crowd_advance_to(crowd, time) == CROWDGPU_OK, "advance: %s", crowdgpu_last_error());

@@ -27,7 +27,7 @@
 namespace readme {
 void embeddingExample(const crowdgpu::Device& device, const std::function<void(VkCommandBuffer)>& submitAndWait,
                       VkCommandBuffer setupCmd, VkCommandBuffer cmd, std::uint32_t slot, const crowdgpu::FrameView& view,
-                      float time, const VkRenderingInfo& yourColourPass,
+                      double time, const VkRenderingInfo& yourColourPass,
                       const std::function<void(crowdgpu::Renderer&)>& frameRecorded);
 }  // namespace readme
 
@@ -61,7 +61,7 @@ crowdgpu::Crowd defaultCrowd(std::uint32_t count) {
 }
 
 // crowd-render's camera for the default scene at `time`, as the host's matrices.
-crowdgpu::FrameView defaultView(const crowdgpu::Crowd& crowd, VkExtent2D size, float time) {
+crowdgpu::FrameView defaultView(const crowdgpu::Crowd& crowd, VkExtent2D size, double time) {
     float center[3], radius, tallest;
     crowd.bounds(center, radius, tallest);
     const app::CrowdShape shape{glm::vec3(center[0], center[1], center[2]), radius, tallest};
@@ -204,7 +204,7 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
     const float lastTime = 5.0f / 60.0f;
     for (std::uint32_t frame = 0; frame < 6; ++frame) {
         const std::uint32_t slot = frame % 2;
-        const float time = static_cast<float>(frame) / 60.0f;
+        const double time = static_cast<double>(frame) / 60.0;
         ASSERT_EQ(vkWaitForFences(context->device, 1, &fences[slot], VK_TRUE, UINT64_MAX), VK_SUCCESS);
         vkResetFences(context->device, 1, &fences[slot]);
         soldiers.advanceTo(time);
@@ -437,7 +437,7 @@ TEST_F(GpuTest, ReadmeEmbeddingBlockDrawsTheCrowd) {
     };
     // The block builds its own crowd: the view is of the same crowd built here.
     const crowdgpu::FrameView view = defaultView(defaultCrowd(1024), size, 0.0f);
-    readme::embeddingExample(host.device, submitAndWait, cmds[0], cmds[1], 0, view, 0.0f, yourColourPass, frameRecorded);
+    readme::embeddingExample(host.device, submitAndWait, cmds[0], cmds[1], 0, view, 0.0, yourColourPass, frameRecorded);
     const app::Rgba8Image frame = readBgraImage(*context, color);
 
     EXPECT_GT(drawn, 0u);

@@ -20,6 +20,7 @@
 #include "anim/skinning_matrices.h"
 #include "app/crowd_app.h"
 #include "crowd/crowd.h"
+#include "crowd/plan_steps.h"
 #include "gpu/vulkan_error.h"
 #include "model/procedural_models.h"
 #include "render/crowd_buffers.h"

@@ -5,6 +5,7 @@
 #include "app/memory_shortfall.h"
 #include "app/number_text.h"
 #include "app/options.h"
+#include "app/start_time.h"
 #include "app/error.h"
 
 namespace {
@@ -31,8 +32,25 @@ TEST(Messages, NumbersAreWrittenAsAPersonWritesThem) {
 }
 
 TEST(Messages, RangesReadAsWrittenInTheHelp) {
-    EXPECT_EQ(parseError("--start", "2e6", 0.0f, 1e6f), "--start: 2e6 is outside 0..1000000");
+    EXPECT_EQ(parseError("--impostor-threshold", "2e6", 0.0f, 1e6f), "--impostor-threshold: 2e6 is outside 0..1000000");
     EXPECT_EQ(parseError("--lod-hysteresis", "0.9", 0.0f, 0.5f), "--lod-hysteresis: 0.9 is outside 0..0.5");
+}
+
+TEST(Messages, StartTimesReadAsWrittenInTheHelp) {
+    auto startError = [](const std::string& text) {
+        try {
+            app::parseStartSeconds("--start", text);
+        } catch (const app::Error& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(startError("2e9"), "--start: 2e9 is outside 0..1000000000");
+    EXPECT_EQ(startError("-0.5"), "--start: -0.5 is outside 0..1000000000");
+    EXPECT_EQ(startError("1e9"), "");
+    // A double: the start is kept to the microsecond at a million seconds (a float kept 62.5 ms).
+    EXPECT_EQ(app::parseStartSeconds("--start", "1000000.000001"), 1000000.000001);
+    EXPECT_EQ(app::formatNumber(1e9), "1000000000");
 }
 
 TEST(Messages, AnImageTooLargeForDeviceMemoryIsBlamedOnSize) {

@@ -721,7 +721,7 @@ int main(int argc, char** argv) {
         for (std::uint32_t frame = 0; frame < frameCount; ++frame) {
             const std::uint32_t slot = frame % kFramesInFlight;
             const bool last = frame == frameCount - 1;
-            const float time = frameTime(frame, options.start);
+            const double time = frameTime(frame, options.start);
             frameStarts[frame] = nowMs();
             // Wait for this slot's previous frame: its command buffer and the renderer's slot are free.
             CHECK(vkWaitForFences(gpu.device, 1, &fences[slot], VK_TRUE, UINT64_MAX));

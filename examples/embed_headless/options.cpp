@@ -28,10 +28,10 @@ std::uint32_t parseWhole(const std::string& what, const std::string& text) {
     return static_cast<std::uint32_t>(value);
 }
 
-float parseSeconds(const std::string& what, const std::string& text) {
+double parseSeconds(const std::string& what, const std::string& text) {
     char* end = nullptr;
-    const float value = std::strtof(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(value) || value < 0.0f)
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(value) || value < 0.0)
         throw std::invalid_argument(what + ": '" + text + "' is not a number of seconds");
     return value;
 }

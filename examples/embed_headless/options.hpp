@@ -20,7 +20,7 @@ struct Options {
     std::uint32_t warmup = 0;   // drawn first, left out of the timings
     Scene scene = Scene::Own;
     std::uint32_t count = 0;    // characters; 0: the scene's
-    float start = 0.0f;         // seconds on the scene's clock at the first frame
+    double start = 0.0;         // seconds on the scene's clock at the first frame
     crowdgpu::Method method = crowdgpu::Method::Compute;
     // Only what crowd-render draws (the library's ground and the crowd): no boxes, no ground or ID
     // pass of the host's, so its frame costs what the programs' frame costs.

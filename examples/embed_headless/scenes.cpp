@@ -108,7 +108,9 @@ crowdgpu::Crowd makeCrowd(std::uint32_t count) {
     return crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
 }
 
-CameraPose cameraAt(Scene scene, const crowdgpu::Crowd& crowd, float seconds) {
+CameraPose cameraAt(Scene scene, const crowdgpu::Crowd& crowd, double sceneSeconds) {
+    // The paths repeat every kPathPeriod: only the place within a period matters, kept in a float.
+    const float seconds = static_cast<float>(sceneSeconds - std::floor(sceneSeconds / kPathPeriod) * kPathPeriod);
     const CrowdShape shape = shapeOf(crowd);
     switch (scene) {
         case Scene::Own: return threeQuarter(shape);

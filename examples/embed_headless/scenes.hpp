@@ -33,8 +33,8 @@ struct CameraPose {
     float verticalFov;  // radians
     float nearPlane, farPlane;
 };
-CameraPose cameraAt(Scene scene, const crowdgpu::Crowd& crowd, float seconds);
+CameraPose cameraAt(Scene scene, const crowdgpu::Crowd& crowd, double seconds);
 
 // The programs' clock: frame `index` of a run that starts at `start` seconds, at a fixed 60 Hz step
 // so that every run of a scene shows the same frames.
-inline float frameTime(std::uint32_t index, float start) { return start + static_cast<float>(index) / 60.0f; }
+inline double frameTime(std::uint32_t index, double start) { return start + static_cast<double>(index) / 60.0; }

@@ -76,20 +76,22 @@ public:
     std::uint32_t spawn(const Character& character);
     // From time `at` (or once its crossfade ends) walk to (x, z) with clip `gait` (-1: the model's walk)
     // at `rate` times its speed, and stop there.
-    void moveTo(std::uint32_t character, float x, float z, float at, std::int32_t gait = -1, float rate = 1.0f);
+    void moveTo(std::uint32_t character, float x, float z, double at, std::int32_t gait = -1, float rate = 1.0f);
     // From time `at` crossfade over `fade` seconds to `clip` at `rate` and keep playing it.
-    void play(std::uint32_t character, std::int32_t clip, float at, float fade = 0.3f, float rate = 1.0f);
+    void play(std::uint32_t character, std::int32_t clip, double at, float fade = 0.3f, float rate = 1.0f);
     // Plans every character up to `time` seconds: the host calls it once per frame, before recording.
-    // Cost: the characters whose plan ran out (none for an in-place crowd).
-    void advanceTo(float time);
-    CharacterState stateAt(std::uint32_t character, float time) const;
+    // Cost: the characters whose plan ran out (none for an in-place crowd); a time far ahead costs no
+    // more than the next frame's (the behaviours' episodes start from closed-form states). Times are
+    // doubles: a crowd is as exact at 1e9 s as at 0 s.
+    void advanceTo(double time);
+    CharacterState stateAt(std::uint32_t character, double time) const;
     // The character as it entered the crowd (its home position, model, scale, ...).
     Character character(std::uint32_t character) const;
     // Every character's skinning matrices at `time` (after advanceTo), on the CPU: 12 floats per joint
     // (the three rows of a 3x4 matrix), characters in order, each its model's jointCount() joints;
     // `rows` is resized to 12 x paletteJoints(). On every core (`allCores`) or the calling thread
     // only. About 50 ns per joint per core. The renderer's GPU path does the same on the GPU.
-    void computePalettes(float time, std::vector<float>& rows, bool allCores = true) const;
+    void computePalettes(double time, std::vector<float>& rows, bool allCores = true) const;
     std::uint64_t paletteJoints() const;
 
     // The ground the crowd stands on: centre (x, y, z) and radius in metres; its tallest model's height.

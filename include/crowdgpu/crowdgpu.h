@@ -67,10 +67,11 @@ typedef struct crowdgpu_character {
 crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_t model_count, uint32_t count,
                                            uint32_t seed, crowdgpu_behaviour behaviour, crowdgpu_crowd* out);
 crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* character, uint32_t* index);
-crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, float at);
-crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, float at, float fade);
-/* Plans every character up to `time` seconds: once per frame, before recording. */
-crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, float time);
+crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, double at);
+crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, double at, float fade);
+/* Plans every character up to `time` seconds: once per frame, before recording. Scene times are
+ * doubles: a crowd is as exact at 1e9 s as at 0 s. */
+crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time);
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
 void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest);
 void crowdgpu_crowd_destroy(crowdgpu_crowd crowd);
@@ -113,11 +114,11 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* settings);
 typedef struct crowdgpu_frame_view {
     float view[16], projection[16]; /* column-major; projection in Vulkan clip space, depth 0..1 */
     VkRect2D viewport;
-    float time;
+    double time; /* seconds on the crowd's clock */
 } crowdgpu_frame_view;
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
-                      VkExtent2D extent, float time, crowdgpu_frame_view* out);
+                      VkExtent2D extent, double time, crowdgpu_frame_view* out);
 
 /* Device bytes a renderer with these settings will allocate for the crowd (0 on failure). */
 uint64_t crowdgpu_memory_needed(VkPhysicalDevice physical_device, crowdgpu_crowd crowd,

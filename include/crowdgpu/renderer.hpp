@@ -113,12 +113,12 @@ struct FrameView {
     float view[16];
     float projection[16];  // perspective, Vulkan clip space (y down, depth 0..1)
     VkRect2D viewport;     // pixels of the host's target
-    float time;            // seconds on the crowd's clock
+    double time;           // seconds on the crowd's clock (a double: exact at any scene time)
 };
 
 // A view and projection looking from `eye` at `target` (y up), for hosts without their own.
 FrameView lookAt(const float eye[3], const float target[3], float verticalFov, float nearPlane, float farPlane,
-                 VkExtent2D extent, float time);
+                 VkExtent2D extent, double time);
 
 struct MemoryItem {
     std::string what;

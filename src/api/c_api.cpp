@@ -127,17 +127,17 @@ crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_charac
     });
 }
 
-crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, float at) {
+crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, double at) {
     if (!crowd) return invalid("crowdgpu_crowd_move_to: crowd is NULL");
     return guarded([&] { crowd->crowd.moveTo(character, x, z, at); });
 }
 
-crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, float at, float fade) {
+crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, double at, float fade) {
     if (!crowd) return invalid("crowdgpu_crowd_play: crowd is NULL");
     return guarded([&] { crowd->crowd.play(character, clip, at, fade); });
 }
 
-crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, float time) {
+crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time) {
     if (!crowd) return invalid("crowdgpu_crowd_advance_to: crowd is NULL");
     return guarded([&] { crowd->crowd.advanceTo(time); });
 }
@@ -174,7 +174,7 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
-                      VkExtent2D extent, float time, crowdgpu_frame_view* out) {
+                      VkExtent2D extent, double time, crowdgpu_frame_view* out) {
     if (!eye || !target || !out) return;
     const crowdgpu::FrameView v = crowdgpu::lookAt(eye, target, vertical_fov, near_plane, far_plane, extent, time);
     std::memcpy(out->view, v.view, sizeof out->view);

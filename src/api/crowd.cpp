@@ -90,19 +90,19 @@ std::uint32_t Crowd::spawn(const Character& character) {
     return detail::translated([&] { return data_->crowd().spawn(toInternal(character)); });
 }
 
-void Crowd::moveTo(std::uint32_t character, float x, float z, float at, std::int32_t gait, float rate) {
+void Crowd::moveTo(std::uint32_t character, float x, float z, double at, std::int32_t gait, float rate) {
     detail::translated([&] { data_->crowd().moveTo(character, glm::vec2(x, z), at, gait, rate); });
 }
 
-void Crowd::play(std::uint32_t character, std::int32_t clip, float at, float fade, float rate) {
+void Crowd::play(std::uint32_t character, std::int32_t clip, double at, float fade, float rate) {
     detail::translated([&] { data_->crowd().play(character, clip, at, fade, rate); });
 }
 
-void Crowd::advanceTo(float time) {
+void Crowd::advanceTo(double time) {
     detail::translated([&] { data_->crowd().advanceTo(time); });
 }
 
-CharacterState Crowd::stateAt(std::uint32_t character, float time) const {
+CharacterState Crowd::stateAt(std::uint32_t character, double time) const {
     if (character >= size())
         throw Error(ErrorCode::InvalidArgument, "no character " + std::to_string(character) + " in a crowd of " +
                                                     std::to_string(size()));
@@ -116,7 +116,7 @@ std::uint64_t Crowd::paletteJoints() const {
     return joints;
 }
 
-void Crowd::computePalettes(float time, std::vector<float>& rows, bool allCores) const {
+void Crowd::computePalettes(double time, std::vector<float>& rows, bool allCores) const {
     detail::translated([&] {
         const crowd::Crowd& crowd = data_->crowd();
         std::vector<std::uint32_t> offsets(crowd.size());

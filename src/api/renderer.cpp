@@ -84,7 +84,7 @@ render::FrameView internalView(const FrameView& v) {
 }  // namespace
 
 FrameView lookAt(const float eye[3], const float target[3], float verticalFov, float nearPlane, float farPlane,
-                 VkExtent2D extent, float time) {
+                 VkExtent2D extent, double time) {
     render::Camera camera;
     camera.eye = glm::make_vec3(eye);
     camera.target = glm::make_vec3(target);

@@ -1,12 +1,16 @@
 #pragma once
-// Behaviours: what characters do next, planned one motion segment at a time (crowd/motion.h) when the
-// previous segment's plan runs out. Every choice comes from a hash of (seed, character, plan count),
-// never from the frame or the thread, so the same seed gives the same crowd at the same time on any
-// machine and at any frame rate.
+// Behaviours: what characters do next, planned one motion segment at a time (crowd/segment.h) when the
+// previous segment's plan runs out. Every choice comes from a hash of (seed, character, episode, plan
+// count), never from the frame or the thread, so the same seed gives the same crowd at the same time on
+// any machine and at any frame rate.
 //   in place: the paper's crowd; each character loops its clip where it stands, forever.
-//   march:    a formation in step: stand, march out, turn about, march back, turn about, halt, repeat.
-//   mill:     each character stands a while, picks a target near home, sets off walking or running,
-//             speeds up or slows down on the way, and stops there; every change is a crossfade.
+//   march:    a formation in step: stand, march out, turn about, march back, turn about, halt, repeat
+//             (crowd/march.h).
+//   mill:     each character stands a while, sets off walking or running to a target near home, speeds
+//             up or slows down on the way, and stops there; every change is a crossfade (crowd/mill.h).
+// Both living behaviours are episodes whose first state is closed form (where, facing where, at which
+// phase, from when), so reaching any time costs one episode of planning, not every plan since 0 s.
+// A program's commands (crowd/commands.h) take a character out of its behaviour for good.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -15,7 +19,8 @@
 
 #include "anim/clip_library.h"
 #include "crowd/gaits.h"
-#include "gpu_types.h"
+#include "crowd/rhythm.h"
+#include "crowd/segment.h"
 
 namespace crowd {
 
@@ -33,18 +38,27 @@ struct BehaviourSettings {
 
 // A character's planner state between segments.
 struct Agent {
-    enum class Stage : std::uint8_t { Forever, Stand, Cruise, MarchOut, TurnAbout, MarchBack, TurnHome, Halt, Play };
-    static constexpr float kNever = std::numeric_limits<float>::infinity();
+    enum class Stage : std::uint8_t {
+        Forever, Stand, Cruise, Bend, Stop, Rest, MarchOut, TurnAbout, MarchBack, TurnHome, Halt, Play
+    };
+    static constexpr double kNever = std::numeric_limits<double>::infinity();
     Behaviour kind = Behaviour::InPlace;
     Stage stage = Stage::Forever;
     bool commanded = false;  // following a program's command (Crowd::moveTo / play) instead of a behaviour
-    float due = kNever;      // when the next segment must be planned
-    std::uint32_t plans = 0; // segments planned so far: salts this character's random choices
-    glm::vec2 home{0.0f};    // where a milling character started
-    glm::vec2 target{0.0f};  // where it is going
+    std::uint32_t episode = 0;  // the mill episode or march cycle under way
+    std::uint32_t plans = 0;    // segments planned in it (or under commands): salts the random choices
+    double due = kNever;        // when the next segment must be planned
+    double episodeEnd = kNever; // when the next episode starts (from a closed-form state)
+    glm::vec3 home{0.0f};       // where the character started
+    float homeHeading = 0.0f;   // and facing where
+    float homePhase = 0.0f;     // at which phase of its first clip
+    glm::vec2 target{0.0f};     // where it is going
     std::int32_t gait = Gaits::kNone;  // the clip it travels with
-    float rate = 1.0f;       // playback rate of its gait (variety)
-    float fade = 0.3f;       // crossfade of a commanded clip (Stage::Play)
+    float rate = 1.0f;          // playback rate of its gait (variety)
+    float fade = 0.3f;          // crossfade of a commanded clip (Stage::Play)
+    double stopCycles = 0.0;      // the whole cycles its planned stop lands on (crowd/standing.h)
+    float bendTurn = 0.0f;        // the second leg of a bent arrival (crowd/arrival.h): its turn
+    double bendLength = 0.0;      // and seconds
 };
 
 struct PlanContext {
@@ -52,26 +66,20 @@ struct PlanContext {
     std::uint32_t model;
     const Gaits& gaits;
     const BehaviourSettings& settings;
+    const Rhythm& rhythm;
     std::uint32_t character;
 };
 
 // Starts a character's behaviour at time 0 from its first segment (the in-place loop its layout gave
 // it): returns the segment to follow and sets the agent's stage and due time.
-gpu::MotionRecord startBehaviour(Agent& agent, const gpu::MotionRecord& first, const PlanContext& context);
+Segment startBehaviour(Agent& agent, const Segment& first, const PlanContext& context);
 
 // The segment that follows `current` from agent.due on; advances the agent's stage and due time.
-gpu::MotionRecord planNext(Agent& agent, const gpu::MotionRecord& current, const PlanContext& context);
+Segment planNext(Agent& agent, const Segment& current, const PlanContext& context);
 
-// A segment that crossfades from wherever `current` is at `start` to `clip` (played `rate` times its
-// natural speed) over `fade` seconds, travelling by root motion, heading unchanged.
-gpu::MotionRecord transition(const gpu::MotionRecord& current, float start, std::uint32_t clip, float rate, float fade,
-                             const PlanContext& context);
-// Makes `segment` turn from its start heading to `heading` (the shorter way) at `turnRate` rad/s.
-void turnTowards(gpu::MotionRecord& segment, float heading, float turnRate);
-// The heading that carries a character of the segment's to-clip towards `target` from `from`.
-float headingTowards(const glm::vec2& from, const glm::vec2& target, std::uint32_t clip, const PlanContext& context);
-// Seconds into `segment` when the character is `distance` metres from the segment's origin (bisection
-// on the closed form; the straight-line distance, so meant for paths that barely curve).
-float timeToCover(const gpu::MotionRecord& segment, float distance, const PlanContext& context);
+// When `time` lies past the episode under way (and no command is being followed), moves the agent
+// straight to the episode holding `time`, whose first state is closed form, and returns its first
+// segment in `segment`: what planNext would have reached by planning every segment in between.
+bool skipTo(Agent& agent, double time, const PlanContext& context, Segment& segment);
 
 }  // namespace crowd

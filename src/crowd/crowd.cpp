@@ -1,6 +1,7 @@
 #include "crowd/crowd.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -11,6 +12,7 @@
 #include "anim/blending_job.h"
 #include "anim/palette_job.h"
 #include "anim/sampling_job.h"
+#include "crowd/epoch.h"
 #include "crowd/worker_pool.h"
 #include "model/measure_root_motion.h"
 #include "gpu/error.h"
@@ -110,6 +112,7 @@ Crowd::Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Charact
         for (const anim::Clip& clip : m->clips) rootMotion.push_back(model::measureRootMotion(*m, clip));
         const std::uint32_t index = library_.addModel(m->skeleton, m->clips, rootMotion);
         gaits_.push_back(findGaits(*m, library_, index));
+        rhythms_.push_back(measureRhythm(library_, index, gaits_.back(), behaviour_));
     }
     characters_.reserve(characters.size());
     for (const Character& c : characters) addCharacter(c);
@@ -132,11 +135,14 @@ void Crowd::addCharacter(const Character& c) {
     cursors_.resize(cursors_.size() + 6u * m.skeleton.jointCount(), 0u);
     // Phase and rate as the paper's crowd plays them: clip time = timeOffset + time x speed.
     const float duration = m.clips.empty() ? 0.0f : m.clips[c.clip].duration;
-    const gpu::MotionRecord first = inPlaceSegment(library_, c.model, c.clip, c.position, c.heading, 0.0f,
-                                                   duration > 0.0f ? c.timeOffset / duration : 0.0f, c.speed);
+    const Segment first{0.0,
+                        inPlaceSegment(library_, c.model, c.clip, c.position, c.heading, 0.0f,
+                                       duration > 0.0f ? c.timeOffset / duration : 0.0f, c.speed),
+                        exactCyclesPerSecond(library_, c.model, c.clip, c.speed)};
     agents_.emplace_back();
-    segments_.push_back(startBehaviour(agents_.back(), first, planContext(index)));
-    sealSegment(segments_.back(), library_, c.model);
+    plans_.push_back(startBehaviour(agents_.back(), first, planContext(index)));
+    seal(plans_.back(), library_, c.model);
+    segments_.push_back(recordFrom(plans_.back(), epoch_, library_, c.model));
     changed_.push_back(1u);
     lastChanged_.push_back(index);
     nextDue_ = std::min(nextDue_, agents_.back().due);
@@ -147,29 +153,51 @@ void Crowd::addCharacter(const Character& c) {
 std::uint32_t Crowd::spawn(const Character& character) {
     lastChanged_.clear();
     addCharacter(character);
-    plannedTo_ = std::min(plannedTo_, 0.0f);
+    plannedTo_ = std::min(plannedTo_, 0.0);
     return size() - 1;
 }
 
 PlanContext Crowd::planContext(std::uint32_t character) const {
     const std::uint32_t model = characters_[character].model;
-    return {library_, model, gaits_[model], behaviour_, character};
+    return {library_, model, gaits_[model], behaviour_, rhythms_[model], character};
 }
 
-void Crowd::replan(std::uint32_t character, float time) {
+std::uint32_t Crowd::replan(std::uint32_t character, double time) {
     Agent& agent = agents_[character];
-    while (agent.due <= time) {
-        segments_[character] = planNext(agent, segments_[character], planContext(character));
-        sealSegment(segments_[character], library_, characters_[character].model);
+    const PlanContext context = planContext(character);
+    const std::uint32_t model = characters_[character].model;
+    std::uint32_t planned = 0;
+    auto changed = [&] {
+        seal(plans_[character], library_, model);
         changed_[character] = 1u;
+        ++planned;
+    };
+    // Past the episode under way: straight to the one holding `time`, not through every one between.
+    if (skipTo(agent, time, context, plans_[character])) changed();
+    while (agent.due <= time) {
+        plans_[character] = planNext(agent, plans_[character], context);
+        changed();
     }
+    return planned;
 }
 
-void Crowd::advanceTo(float time) {
+void Crowd::restateRecords() {
+    const bool everyone = epochOf(plannedTo_) != epoch_;
+    epoch_ = epochOf(plannedTo_);
+    if (everyone) std::fill(changed_.begin(), changed_.end(), 1u);
+    // A new epoch restates every character (tens of nanoseconds each): on every core, as planning is.
+    WorkerPool::shared().parallelFor(size(), 4096, [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t c = begin; c < end; ++c)
+            if (changed_[c]) segments_[c] = recordFrom(plans_[c], epoch_, library_, characters_[c].model);
+    });
+}
+
+void Crowd::advanceTo(double time) {
     if (time < plannedTo_) {
         // Back in time: every plan starts over from the layout.
         std::vector<Character> characters = std::move(characters_);
         characters_.clear();
+        plans_.clear();
         segments_.clear();
         agents_.clear();
         cursors_.clear();
@@ -179,8 +207,9 @@ void Crowd::advanceTo(float time) {
         for (const Character& c : characters) addCharacter(c);
     }
     plannedTo_ = time;
-    // Nobody's plan runs out before `nextDue_` (an in-place crowd: never): no character to visit.
-    if (time < nextDue_ && !added_) {
+    // Nobody's plan runs out before `nextDue_` (an in-place crowd: never) and the epoch holds: no
+    // character to visit.
+    if (time < nextDue_ && !added_ && epochOf(time) == epoch_) {
         lastChanged_.clear();
         ++generation_;
         return;
@@ -188,9 +217,14 @@ void Crowd::advanceTo(float time) {
     added_ = false;
     // Characters plan independently (their choices hash their own index), so any split of the work
     // gives the same crowd.
+    std::atomic<std::uint64_t> planned{0};
     WorkerPool::shared().parallelFor(size(), 256, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t c = begin; c < end; ++c) replan(c, time);
+        std::uint64_t count = 0;
+        for (std::uint32_t c = begin; c < end; ++c) count += replan(c, time);
+        planned.fetch_add(count, std::memory_order_relaxed);
     });
+    planned_ += planned.load();
+    restateRecords();
     lastChanged_.clear();
     nextDue_ = Agent::kNever;
     for (std::uint32_t c = 0; c < size(); ++c) {
@@ -205,17 +239,17 @@ void Crowd::checkCharacter(std::uint32_t character) const {
         throw gpu::Error("no character " + std::to_string(character) + " in a crowd of " + std::to_string(size()));
 }
 
-void Crowd::command(std::uint32_t character, float at) {
+void Crowd::command(std::uint32_t character, double at) {
     Agent& agent = agents_[character];
-    const gpu::MotionRecord& current = segments_[character];
+    const Segment& current = plans_[character];
     // A crossfade in progress finishes first: a segment blends two clips, never three.
-    agent.due = std::max(at, current.timing.x + current.timing.y);
+    agent.due = std::max(at, current.start + current.motion.timing.y);
     agent.commanded = true;
     nextDue_ = std::min(nextDue_, agent.due);
 }
 
 // Commands check everything before they change anything: a refused one leaves the character as it was.
-void Crowd::moveTo(std::uint32_t character, glm::vec2 target, float at, std::int32_t gait, float rate) {
+void Crowd::moveTo(std::uint32_t character, glm::vec2 target, double at, std::int32_t gait, float rate) {
     checkCharacter(character);
     const std::uint32_t model = characters_[character].model;
     const std::int32_t clip = gait >= 0 ? gait : gaits_[model].walk;
@@ -232,7 +266,7 @@ void Crowd::moveTo(std::uint32_t character, glm::vec2 target, float at, std::int
     agent.stage = Agent::Stage::Stand;
 }
 
-void Crowd::play(std::uint32_t character, std::int32_t clip, float at, float fade, float rate) {
+void Crowd::play(std::uint32_t character, std::int32_t clip, double at, float fade, float rate) {
     checkCharacter(character);
     if (clip < 0 || static_cast<std::uint32_t>(clip) >= library_.clipCount(characters_[character].model))
         throw gpu::Error("character " + std::to_string(character) + ": " + modelOf(character).name + " has no clip " +
@@ -245,11 +279,11 @@ void Crowd::play(std::uint32_t character, std::int32_t clip, float at, float fad
     agent.stage = Agent::Stage::Play;
 }
 
-MotionState Crowd::stateAt(std::uint32_t index, float time) const {
-    return evaluateMotion(segments_[index], time, library_, characters_[index].model);
+MotionState Crowd::stateAt(std::uint32_t index, double time) const {
+    return evaluateMotion(segments_[index], static_cast<float>(time - epoch_), library_, characters_[index].model);
 }
 
-void Crowd::poseRecord(std::uint32_t index, float time, gpu::CharacterRecord& record) const {
+void Crowd::poseRecord(std::uint32_t index, double time, gpu::CharacterRecord& record) const {
     writePose(stateAt(index, time), record);
 }
 
@@ -259,7 +293,7 @@ void Crowd::writePose(const MotionState& state, gpu::CharacterRecord& record) {
     record.pose = glm::vec4(state.phase, state.weight, 0.0f, 0.0f);
 }
 
-void Crowd::animateCharacter(std::uint32_t index, float time, std::span<gpu::BoneRows> out) const {
+void Crowd::animateCharacter(std::uint32_t index, double time, std::span<gpu::BoneRows> out) const {
     animateState(index, stateAt(index, time), out);
 }
 
@@ -291,7 +325,7 @@ void Crowd::animateState(std::uint32_t index, const MotionState& state, std::spa
     anim::PaletteJob{&library_, c.model, placement, to, modelSpace, out.first(joints)}.run();
 }
 
-void Crowd::animate(float time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
+void Crowd::animate(double time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
                     std::span<gpu::CharacterRecord> records, WorkerPool* pool) const {
     // Chunks of 32 characters (tens of microseconds each) keep the handoff cost small and the cores even.
     (pool ? *pool : WorkerPool::shared()).parallelFor(size(), 32, [&](std::uint32_t begin, std::uint32_t end) {

@@ -5,7 +5,9 @@
 //
 // Motion is a closed-form segment per character (crowd/motion.h). Behaviours (crowd/behaviours.h) or
 // commands plan a new segment when the last one's plan runs out; advanceTo(time) does that planning,
-// and only the characters it replans change for the GPU.
+// and only the characters it replans change for the GPU. Scene time is a double; the GPU gets each
+// segment relative to the crowd's epoch (crowd/epoch.h), and the CPU reference evaluates the same
+// records with the same float arithmetic.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -16,6 +18,8 @@
 #include "crowd/behaviours.h"
 #include "crowd/gaits.h"
 #include "crowd/motion.h"
+#include "crowd/rhythm.h"
+#include "crowd/segment.h"
 #include "crowd/worker_pool.h"
 #include "gpu_types.h"
 #include "model/skinned_model.h"
@@ -93,33 +97,43 @@ public:
     std::uint32_t spawn(const Character& character);
     // From time `at` on (or once its current crossfade ends), walk to `target` (world x, z) with clip
     // `gait` (-1: the model's walk) at `rate` times its speed, turning on the way, and stop there.
-    void moveTo(std::uint32_t character, glm::vec2 target, float at, std::int32_t gait = -1, float rate = 1.0f);
+    void moveTo(std::uint32_t character, glm::vec2 target, double at, std::int32_t gait = -1, float rate = 1.0f);
     // From time `at` on, crossfade over `fade` seconds to `clip` at `rate` and keep playing it; a clip
     // with root motion carries the character forward along its heading. Throws gpu::Error for a clip the
     // model lacks (a negative one too: what SkinnedModel::findClip returns for a missing name).
-    void play(std::uint32_t character, std::int32_t clip, float at, float fade = 0.3f, float rate = 1.0f);
-    // Plans every character's segments up to `time`. Going back in time replays the behaviours from
-    // the start (commands given so far are forgotten).
-    void advanceTo(float time);
+    void play(std::uint32_t character, std::int32_t clip, double at, float fade = 0.3f, float rate = 1.0f);
+    // Plans every character's segments up to `time`. A behaviour's character whose episode ended
+    // goes straight to the episode holding `time` (its start is closed form), so a late time costs one
+    // episode of planning, as an early one does. Going back in time starts every plan over from there
+    // (commands given so far are forgotten).
+    void advanceTo(double time);
     // The characters whose segment the last advanceTo (or command) changed, and a counter of those
     // calls, so a renderer can upload just them when it has seen every generation before.
     const std::vector<std::uint32_t>& lastChanged() const { return lastChanged_; }
     std::uint64_t generation() const { return generation_; }
-    // Each character's current segment.
+    // Each character's current segment relative to epoch(): what the GPU's motion pass evaluates at
+    // (float)(time - epoch()).
     const std::vector<gpu::MotionRecord>& segments() const { return segments_; }
-    // Where character `index` is and what it plays at `time` (within its planned segment).
-    MotionState stateAt(std::uint32_t index, float time) const;
+    // The epoch of the time advanced to last (crowd/epoch.h).
+    double epoch() const { return epoch_; }
+    // Each character's current segment on the scene clock.
+    const std::vector<Segment>& plans() const { return plans_; }
+    // Segments planned since the crowd was made: what advancing it has cost.
+    std::uint64_t plannedSegments() const { return planned_; }
+    // Where character `index` is and what it plays at `time` (within its planned segment), evaluated
+    // as the GPU does: its record at (float)(time - epoch()).
+    MotionState stateAt(std::uint32_t index, double time) const;
 
     // ---- The CPU animation path (the reference) ----
     // Writes the skinning matrices of every character at `time` (seconds): character c's joint j goes
     // to out[boneOffsets[c] + j]; with `records`, also each record's placement, clips and phase. Jobs
     // (sample, blend, hierarchy) per character, split over `pool`'s threads (default: every core).
-    void animate(float time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
+    void animate(double time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
                  std::span<gpu::CharacterRecord> records = {}, WorkerPool* pool = nullptr) const;
     // The skinning matrices of one character (for tests and pose export).
-    void animateCharacter(std::uint32_t index, float time, std::span<gpu::BoneRows> out) const;
+    void animateCharacter(std::uint32_t index, double time, std::span<gpu::BoneRows> out) const;
     // A record's motion fields (placement, clips, phase) at `time`.
-    void poseRecord(std::uint32_t index, float time, gpu::CharacterRecord& record) const;
+    void poseRecord(std::uint32_t index, double time, gpu::CharacterRecord& record) const;
 
     // Centre and radius of the ground the crowd stands on (and may walk over), and its tallest model's height.
     glm::vec3 center() const;
@@ -128,25 +142,30 @@ public:
 
 private:
     void addCharacter(const Character& character);
-    void startBehaviours();
-    void replan(std::uint32_t character, float time);
+    // Plans character `character` up to `time`; returns the segments it planned.
+    std::uint32_t replan(std::uint32_t character, double time);
+    void restateRecords();
     void animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out) const;
     static void writePose(const MotionState& state, gpu::CharacterRecord& record);
     void checkCharacter(std::uint32_t character) const;
-    void command(std::uint32_t character, float at);
+    void command(std::uint32_t character, double at);
     PlanContext planContext(std::uint32_t character) const;
 
     std::vector<const model::SkinnedModel*> models_;
     std::vector<Character> characters_;
     anim::ClipLibrary library_;
     std::vector<Gaits> gaits_;
+    std::vector<Rhythm> rhythms_;
     BehaviourSettings behaviour_;
-    std::vector<gpu::MotionRecord> segments_;
+    std::vector<Segment> plans_;
+    std::vector<gpu::MotionRecord> segments_;  // plans_ relative to epoch_
     std::vector<Agent> agents_;
-    float plannedTo_ = 0.0f;
+    double plannedTo_ = 0.0;
+    double epoch_ = 0.0;
+    std::uint64_t planned_ = 0;
     std::vector<std::uint32_t> lastChanged_;
     std::vector<std::uint8_t> changed_;
-    float nextDue_ = Agent::kNever;  // the earliest time any character's plan runs out
+    double nextDue_ = Agent::kNever;  // the earliest time any character's plan runs out
     bool added_ = false;             // characters added since the last full advance
     std::uint64_t generation_ = 0;
     // Key cursors of the sampling jobs, six per joint (two clips) per character: a cache of where each

@@ -107,6 +107,12 @@ float cyclesPerSecond(const anim::ClipLibrary& library, std::uint32_t model, std
     return duration > 0.0f ? rate / duration : 0.0f;
 }
 
+double exactCyclesPerSecond(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip, float rate) {
+    if (clip >= library.clipCount(model)) return 0.0;
+    const double duration = library.duration(model, clip);
+    return duration > 0.0 ? rate / duration : 0.0;
+}
+
 gpu::MotionRecord inPlaceSegment(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip,
                                  const glm::vec3& position, float heading, float start, float phase, float rate) {
     gpu::MotionRecord segment{};

@@ -50,6 +50,8 @@ gpu::MotionRecord inPlaceSegment(const anim::ClipLibrary& library, std::uint32_t
 
 // Cycles per second of a model's clip played `rate` times its natural speed (0 for a clip of no length).
 float cyclesPerSecond(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip, float rate);
+// The same in double, for what must stay exact over hours (crowd::Segment::rate).
+double exactCyclesPerSecond(const anim::ClipLibrary& library, std::uint32_t model, std::uint32_t clip, float rate);
 
 // The world-space direction of a model-space (x, z) displacement for a character facing `heading`.
 glm::vec2 turnToWorld(glm::vec2 modelSpace, float heading);

@@ -159,12 +159,14 @@ void AnimationPass::uploadSegments(VkCommandBuffer cmd, std::uint32_t frameSlot)
     gpu::memoryBarrier(cmd, kComputeWrite, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
 }
 
-void AnimationPass::recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, float time) {
+void AnimationPass::recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, double time) {
     uploadSegments(cmd, frameSlot);
     // The previous frames' passes must be done reading the records before they are rewritten.
     gpu::memoryBarrier(cmd, {kCharacterReaders, 0}, kComputeWrite);
     const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
-    const gpu::MotionPush push{glm::uvec4(crowd_.size(), maxGroups, 0u, 0u), glm::vec4(time, 0.0f, 0.0f, 0.0f)};
+    // The segments are relative to the crowd's epoch (crowd/epoch.h): so is the time, a small float.
+    const auto sinceEpoch = static_cast<float>(time - crowd_.epoch());
+    const gpu::MotionPush push{glm::uvec4(crowd_.size(), maxGroups, 0u, 0u), glm::vec4(sinceEpoch, 0.0f, 0.0f, 0.0f)};
     const VkDescriptorSet set = motionSet_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, motionLayout_, 0, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, motionLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);

@@ -39,7 +39,7 @@ public:
 
     // Uploads the segments the crowd changed since this pass last looked (all of them when it missed a
     // generation), then runs the motion pass for `time`. The records are ready for culling after it.
-    void recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, float time);
+    void recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, double time);
     // After culling: the bones of every listed character, ready for skinning and drawing.
     void recordPalettes(VkCommandBuffer cmd);
 

@@ -67,7 +67,7 @@ std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, st
         records[i].placement = glm::vec4(c.position, c.heading);
         records[i].tint = glm::vec4(c.tint, c.scale);
         records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, 0u);
-        crowd.poseRecord(i, 0.0f, records[i]);
+        crowd.poseRecord(i, crowd.epoch(), records[i]);  // near where it was advanced to, until a frame's pose
     }
     return records;
 }
@@ -140,7 +140,7 @@ void CrowdBuffers::recordCpuAnimationUpload(VkCommandBuffer cmd, std::uint32_t f
                        {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
 }
 
-void CrowdBuffers::updateRecords(const crowd::Crowd& crowd, float time) {
+void CrowdBuffers::updateRecords(const crowd::Crowd& crowd, double time) {
     crowd::WorkerPool::shared().parallelFor(crowd.size(), 1024, [&](std::uint32_t begin, std::uint32_t end) {
         for (std::uint32_t i = begin; i < end; ++i) crowd.poseRecord(i, time, records_[i]);
     });

@@ -60,7 +60,7 @@ public:
     std::span<gpu::CharacterRecord> mutableRecords() { return records_; }
     // Recomputes the motion fields of records() at `time` on the CPU (what the GPU motion pass writes
     // on the device), for the CPU cull reference.
-    void updateRecords(const crowd::Crowd& crowd, float time);
+    void updateRecords(const crowd::Crowd& crowd, double time);
 
     const gpu::Buffer& characters() const { return characters_; }
     const gpu::Buffer& bones() const { return bones_; }

@@ -32,7 +32,7 @@ Camera cameraOf(const FrameView& frame) {
     return camera;
 }
 
-FrameView frameViewOf(const Camera& camera, VkExtent2D extent, float time) {
+FrameView frameViewOf(const Camera& camera, VkExtent2D extent, double time) {
     const float aspect = static_cast<float>(extent.width) / static_cast<float>(extent.height);
     return {camera.view(), camera.projection(aspect), {{0, 0}, extent}, time};
 }

@@ -14,7 +14,7 @@ struct FrameView {
     // Vulkan clip space: y down, depth 0 at the near plane and 1 at the far one (perspective).
     glm::mat4 projection{1.0f};
     VkRect2D viewport{};
-    float time = 0.0f;  // seconds, the crowd's clock
+    double time = 0.0;  // seconds, the crowd's clock (a double: exact at any scene time)
 };
 
 // The camera the matrices describe: eye, a target one unit ahead, field of view and planes. A far
@@ -22,7 +22,7 @@ struct FrameView {
 Camera cameraOf(const FrameView& view);
 float aspectOf(const FrameView& view);
 // The programs' way: a camera and an image size.
-FrameView frameViewOf(const Camera& camera, VkExtent2D extent, float time);
+FrameView frameViewOf(const Camera& camera, VkExtent2D extent, double time);
 // Whether the matrices are a usable perspective view (finite, invertible, a positive field of view).
 bool isPerspectiveView(const FrameView& view);
 

@@ -28,7 +28,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     const std::uint32_t total = options.warmup + options.frames;
     for (std::uint32_t frame = 0; frame < total; ++frame) {
-        const float time = frameTime(frame, options.scene.startSeconds);
+        const double time = frameTime(frame, options.scene.startSeconds);
         renderer.camera = app::cameraOnPath(options.scene.camera, shape, aspect, time);
         renderer.renderFrame(time);
     }

@@ -5,7 +5,7 @@
 
 namespace app {
 
-crowdgpu::FrameView frameView(const Camera& camera, VkExtent2D extent, float time) {
+crowdgpu::FrameView frameView(const Camera& camera, VkExtent2D extent, double time) {
     const float eye[3] = {camera.eye.x, camera.eye.y, camera.eye.z};
     const float target[3] = {camera.target.x, camera.target.y, camera.target.z};
     return crowdgpu::lookAt(eye, target, camera.verticalFov, camera.nearPlane, camera.farPlane, extent, time);

@@ -17,7 +17,7 @@ struct Camera {
 };
 
 // The view and projection of `camera` over an image of `extent` at animation time `time`.
-crowdgpu::FrameView frameView(const Camera& camera, VkExtent2D extent, float time);
+crowdgpu::FrameView frameView(const Camera& camera, VkExtent2D extent, double time);
 
 // What a camera path needs to know of the crowd: where it stands and how big its characters are.
 struct CrowdShape {

@@ -9,6 +9,9 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 constexpr float kPeriod = 40.0f;  // seconds for a whole path (there and back)
 
+// Seconds into the current period: taken in double, so the camera moves as smoothly at 1e9 s as at 0 s.
+float withinPeriod(double seconds) { return static_cast<float>(seconds - std::floor(seconds / kPeriod) * kPeriod); }
+
 // 0 -> 1 -> 0 over a period, eased at both ends so the camera never jerks.
 float pingPong(float seconds) {
     const float u = seconds / kPeriod - std::floor(seconds / kPeriod);
@@ -61,7 +64,8 @@ const char* cameraPathName(CameraPath path) {
     return "?";
 }
 
-Camera cameraOnPath(CameraPath path, const CrowdShape& crowd, float aspect, float seconds) {
+Camera cameraOnPath(CameraPath path, const CrowdShape& crowd, float aspect, double sceneSeconds) {
+    const float seconds = withinPeriod(sceneSeconds);
     switch (path) {
         case CameraPath::Framed: return frameCrowd(crowd, aspect);
         case CameraPath::Orbit: {

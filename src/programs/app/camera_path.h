@@ -16,6 +16,7 @@ enum class CameraPath {
 };
 const char* cameraPathName(CameraPath path);
 
-Camera cameraOnPath(CameraPath path, const CrowdShape& crowd, float aspect, float seconds);
+// `seconds` is scene time, a double: the paths repeat, so only its place within a period matters.
+Camera cameraOnPath(CameraPath path, const CrowdShape& crowd, float aspect, double seconds);
 
 }  // namespace app

@@ -64,6 +64,6 @@ void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, cons
                     VkExtent2D size);
 
 // Animation time of frame `index`: a fixed 60 Hz step from `start` seconds, so runs are reproducible.
-inline float frameTime(std::uint32_t index, float start = 0.0f) { return start + static_cast<float>(index) / 60.0f; }
+inline double frameTime(std::uint32_t index, double start = 0.0) { return start + static_cast<double>(index) / 60.0; }
 
 }  // namespace app

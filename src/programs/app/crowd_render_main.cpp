@@ -109,7 +109,7 @@ int run(const app::RenderOptions& options) {
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     app::RecentFrames recent(kSummarizedFrames, std::min(5u, options.frames / 4));  // warm-up left out
     for (std::uint32_t frame = 0; frame < options.frames; ++frame) {
-        const float time = app::frameTime(frame, options.startSeconds);
+        const double time = app::frameTime(frame, options.startSeconds);
         renderer.camera = app::cameraOnPath(options.camera, shape, aspect, time);
         renderer.renderFrame(time);
         recent.add(renderer.takeStats());

@@ -58,7 +58,7 @@ void CrowdRenderer::runSetup() {
     setupMs_ += nowMs() - start;
 }
 
-void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
+void CrowdRenderer::renderFrame(double time, const PresentHooks* hooks) {
     const auto slot = static_cast<std::uint32_t>(frameIndex_++ % frames_.size());
     Frame& frame = frames_[slot];
     const double start = nowMs();
@@ -84,7 +84,7 @@ void CrowdRenderer::renderFrame(float time, const PresentHooks* hooks) {
     frame.stats.recordMs = nowMs() - recordStart - frame.stats.animateMs;
 }
 
-void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, const PresentHooks* hooks) {
+void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double time, const PresentHooks* hooks) {
     timer_.begin(cmd, slot);
     // On the CPU path recordCompute samples every character's clips first: that is the animation time.
     const double computeStart = nowMs();

@@ -62,7 +62,7 @@ public:
     CrowdRenderer& operator=(const CrowdRenderer&) = delete;
 
     // Renders the crowd at animation time `time` seconds, seen by `camera`.
-    void renderFrame(float time, const PresentHooks* hooks = nullptr);
+    void renderFrame(double time, const PresentHooks* hooks = nullptr);
     // Recreates the offscreen target at a new size (waits for the GPU).
     void resize(VkExtent2D size);
     // Switches the skinning method (waits for the GPU).
@@ -104,7 +104,7 @@ private:
     };
     void runSetup();
     void collect(Frame& frame, std::uint32_t slot);
-    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, float time, const PresentHooks* hooks);
+    void recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double time, const PresentHooks* hooks);
     void submit(Frame& frame, const PresentHooks* hooks);
     void waitIdle();
 

@@ -15,6 +15,13 @@ std::string formatNumber(float value) {
     return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
 }
 
+std::string formatNumber(double value) {
+    // A double in fixed notation has at most 309 integer digits and 1074 or so after the point.
+    std::array<char, 1400> text{};
+    const auto [end, error] = std::to_chars(text.data(), text.data() + text.size(), value, std::chars_format::fixed);
+    return error == std::errc() ? std::string(text.data(), end) : std::to_string(value);
+}
+
 std::string formatBytes(std::uint64_t bytes) {
     static const char* const units[] = {"KiB", "MiB", "GiB", "TiB"};
     if (bytes < 1024) return std::to_string(bytes) + " B";

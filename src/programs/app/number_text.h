@@ -8,6 +8,7 @@ namespace app {
 
 // The shortest fixed-point text that reads back as `value` (no exponent, no trailing zeros).
 std::string formatNumber(float value);
+std::string formatNumber(double value);
 
 // Bytes in binary units with one decimal: "1.5 GiB", "12.0 MiB", "512 B".
 std::string formatBytes(std::uint64_t bytes);

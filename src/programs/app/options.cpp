@@ -38,9 +38,9 @@ usage: crowd-render [options]
                           smallest on screen are drawn as impostors; sizes the skinned-vertex buffers
                           (default 65536)
   --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
-  --start SECONDS         scene time of the first frame: where on the camera path (and in the clips)
-                          the run begins (default 0; at most 3600, and for march and mill at most
-                          1e7 / --count: they replan every character from 0 s)
+  --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
+                          the behaviours the run begins (default 0, at most 1e9; as exact and as quick
+                          to reach at 1e9 as at 0)
   --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
                           fraction of it, 0..0.5 (default 0.1)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
@@ -185,7 +185,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             if (!(options.cull.impostorThreshold > 0.0f)) throw app::Error(flag + ": the threshold must be above 0 pixels");
         }
         else if (flag == "--mesh-capacity") options.meshCapacity = parseCount(flag, next(), 1, kMaxCharacters);
-        else if (flag == "--start") options.startSeconds = parseNumber(flag, next(), 0.0f, kMaxStartSeconds);
+        else if (flag == "--start") options.startSeconds = parseStartSeconds(flag, next());
         else if (flag == "--lod-hysteresis") options.cull.hysteresis = parseNumber(flag, next(), 0.0f, 0.5f);
         else if (flag == "--cull") {
             const std::string mode = next();
@@ -226,7 +226,6 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         throw app::Error("--impostor-threshold: " + formatPixels(options.cull.impostorThreshold) +
                          " px is not below the LOD 2 threshold of " + formatPixels(options.cull.lodThresholds[1]) +
                          " px (--lod-thresholds A,B needs B > impostor threshold > 0)");
-    checkStartTime(options.startSeconds, options.scene.count, options.scene.behaviour);
     return options;
 }
 

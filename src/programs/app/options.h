@@ -46,7 +46,7 @@ struct RenderOptions {
     SceneOptions scene;
     app::CullOptions cull;
     app::CameraPath camera = app::CameraPath::Framed;
-    float startSeconds = 0.0f;  // scene time of the first frame (where on the camera path a run begins)
+    double startSeconds = 0.0;  // scene time of the first frame (where on the camera path a run begins)
     bool shadows = true;        // the directional light's shadow map
     crowdgpu::Method method = crowdgpu::Method::TwoPass;
     crowdgpu::Animation animation = crowdgpu::Animation::Gpu;  // where bone matrices are computed

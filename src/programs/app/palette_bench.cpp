@@ -24,13 +24,13 @@ crowdgpu::Crowd millingCrowd(const CrowdModels& models, std::uint32_t count, std
 }
 
 // Median wall-clock milliseconds of `runs` CPU animations of the whole crowd (Crowd::computePalettes).
-double cpuPaletteMs(const crowdgpu::Crowd& crowd, float time, bool allCores, std::uint32_t runs) {
+double cpuPaletteMs(const crowdgpu::Crowd& crowd, double time, bool allCores, std::uint32_t runs) {
     std::vector<float> rows;
     crowd.computePalettes(time, rows, allCores);  // warm: key cursors, per-thread scratch, the rows
     std::vector<double> ms;
     for (std::uint32_t r = 0; r < runs; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        crowd.computePalettes(time + 0.01f * static_cast<float>(r + 1), rows, allCores);
+        crowd.computePalettes(time + 0.01 * static_cast<double>(r + 1), rows, allCores);
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     return median(ms);
@@ -55,7 +55,7 @@ void gpuPaletteMs(const app::HostDevice& context, crowdgpu::Crowd& crowd, const 
                   PaletteRow& row) {
     app::CrowdRenderer frames(context, crowd, gpuRunOptions(options.clock));
     const std::uint32_t total = options.warmup + options.frames;
-    for (std::uint32_t f = 0; f < total; ++f) frames.renderFrame(options.time + static_cast<float>(f) / 60.0f);
+    for (std::uint32_t f = 0; f < total; ++f) frames.renderFrame(options.time + static_cast<double>(f) / 60.0);
     frames.finish();
     const RunSummary summary = summarize(frames.stats(), options.warmup);
     row.gpuPaletteMs = summary.medianGpuMs.count("palette") ? summary.medianGpuMs.at("palette") : 0.0;

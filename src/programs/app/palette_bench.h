@@ -29,7 +29,7 @@ struct PaletteRow {
 struct PaletteBenchOptions {
     std::vector<std::uint32_t> counts;
     std::uint32_t frames = 10, warmup = 3, cpuRuns = 3, seed = 1;
-    float time = 10.0f;  // animation time measured (seconds into the mill)
+    double time = 10.0;  // animation time measured (seconds into the mill)
     app::PassClock clock = app::PassClock::TimestampQueries;
 };
 

@@ -1,25 +1,17 @@
 #pragma once
-// How late a run may start (--start), and why: time is single precision on the CPU and the GPU, and a
-// living crowd replans from 0 s to reach any time.
-#include <cstdint>
-
-#include <crowdgpu/crowd.hpp>
+// How late a run may start (--start, in crowd-render, crowd-bench and crowd-view). Scene time is a
+// double on the CPU and reaches the GPU relative to an epoch near the frame's time (crowd/epoch.h), and
+// a marching or milling crowd goes straight to the episode holding any time, whose start is closed form
+// (crowd/behaviours.h). So a late start plans what an early one does, and consecutive frames at 60 fps
+// differ as they do at 0 s, in every scene.
+#include <string>
 
 namespace app {
 
-// The latest --start. Scene time is a float: at 3600 s it moves in steps of 0.24 ms, so 60 frames a
-// second still show 60 different poses; at 1e6 s the step is 62.5 ms and consecutive frames were one
-// picture. (Carrying time as double down to the GPU would lift this; it is not done.)
-inline constexpr float kMaxStartSeconds = 3600.0f;
+// 31 years of scene time: tests/test_late_start.cpp renders there, frame by frame.
+inline constexpr double kMaxStartSeconds = 1e9;
 
-// A milling or marching crowd reaches --start by planning every segment of every character from 0 s
-// (the same seed gives the same crowd at any frame rate only so): work in proportion to characters x
-// seconds (measured on two cores: 1.6 us per character-second, 32 s of planning for 5,555 characters at
-// 3600 s). This many character-seconds (100,000 characters at 100 s, 2,777 at the full hour) plan in
-// about 15 s on two cores, 2 on sixteen.
-inline constexpr double kMaxReplannedCharacterSeconds = 1e7;
-
-// Throws one line naming --start when `start` is beyond either bound for this crowd.
-void checkStartTime(float start, std::uint32_t count, crowdgpu::Behaviour behaviour);
+// --start's value: seconds in 0..kMaxStartSeconds. Throws one line naming `flag` otherwise.
+double parseStartSeconds(const std::string& flag, const std::string& text);
 
 }  // namespace app

@@ -67,7 +67,7 @@ Viewer::Viewer(const ViewerOptions& options)
 int Viewer::run() {
     using Clock = std::chrono::steady_clock;
     Clock::time_point previous = Clock::now();
-    float animationTime = 0.0f;
+    double animationTime = 0.0;
     std::uint32_t frame = 0;  // frames drawn: a script's frame N is crowd-render's frame N
     while (!window_.shouldClose() && (!options_.scripted || frame < options_.render.frames)) {
         window_.pollEvents();
@@ -92,7 +92,7 @@ int Viewer::run() {
 
         // Scripts step a fixed 1/60 s per frame, as crowd-render does; people see real time.
         if (!controls_.paused) animationTime += seconds * controls_.speed;
-        const float time = options_.scripted ? app::frameTime(frame, options_.render.startSeconds)
+        const double time = options_.scripted ? app::frameTime(frame, options_.render.startSeconds)
                                              : options_.render.startSeconds + animationTime;
         if (controls_.scenePath) {
             // The scene's camera path, as crowd-render flies it (frame N of a script is its frame N).
@@ -123,7 +123,7 @@ int Viewer::run() {
     return 0;
 }
 
-bool Viewer::drawFrame(float time, bool screenshot) {
+bool Viewer::drawFrame(double time, bool screenshot) {
     const std::optional<Swapchain::Frame> frame = swapchain_.acquire();
     if (!frame) return false;
     if (screenshot && !swapchain_.canReadBack()) {

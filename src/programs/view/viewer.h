@@ -39,7 +39,7 @@ private:
         std::optional<std::uint32_t> followed;
     };
 
-    bool drawFrame(float time, bool screenshot);
+    bool drawFrame(double time, bool screenshot);
     void recreateSwapchain(VkExtent2D size);
     void buildUi();
     // Shortcut keys become the same requests as the panel's controls.
