@@ -143,10 +143,10 @@ void Crowd::addCharacter(const Character& c) {
     plans_.push_back(startBehaviour(agents_.back(), first, planContext(index)));
     seal(plans_.back(), library_, c.model);
     segments_.push_back(recordFrom(plans_.back(), epoch_, library_, c.model));
-    changed_.push_back(1u);
+    changed_.push_back(0u);
     lastChanged_.push_back(index);
-    nextDue_ = std::min(nextDue_, agents_.back().due);
-    added_ = true;
+    added_.push_back(index);
+    calendar_.file(index, wakeOf(index));
     ++generation_;
 }
 
@@ -181,15 +181,22 @@ std::uint32_t Crowd::replan(std::uint32_t character, double time) {
     return planned;
 }
 
+double Crowd::wakeOf(std::uint32_t character) const {
+    const Agent& agent = agents_[character];
+    // A commanded character follows its commands only; a behaviour's also wakes when its episode ends.
+    return agent.commanded ? agent.due : std::min(agent.due, agent.episodeEnd);
+}
+
 void Crowd::restateRecords() {
-    const bool everyone = epochOf(plannedTo_) != epoch_;
-    epoch_ = epochOf(plannedTo_);
-    if (everyone) std::fill(changed_.begin(), changed_.end(), 1u);
-    // A new epoch restates every character (tens of nanoseconds each): on every core, as planning is.
-    WorkerPool::shared().parallelFor(size(), 4096, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t c = begin; c < end; ++c)
-            if (changed_[c]) segments_[c] = recordFrom(plans_[c], epoch_, library_, characters_[c].model);
-    });
+    // A new epoch restates every character (tens of nanoseconds each), else the changed ones: on every
+    // core, as planning is.
+    WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(lastChanged_.size()), 4096,
+                                     [&](std::uint32_t begin, std::uint32_t end) {
+                                         for (std::uint32_t i = begin; i < end; ++i) {
+                                             const std::uint32_t c = lastChanged_[i];
+                                             segments_[c] = recordFrom(plans_[c], epoch_, library_, characters_[c].model);
+                                         }
+                                     });
 }
 
 void Crowd::advanceTo(double time) {
@@ -203,34 +210,48 @@ void Crowd::advanceTo(double time) {
         cursors_.clear();
         cursorOffsets_.clear();
         changed_.clear();
-        nextDue_ = Agent::kNever;
+        added_.clear();
+        calendar_.clear();
         for (const Character& c : characters) addCharacter(c);
     }
     plannedTo_ = time;
-    // Nobody's plan runs out before `nextDue_` (an in-place crowd: never) and the epoch holds: no
-    // character to visit.
-    if (time < nextDue_ && !added_ && epochOf(time) == epoch_) {
+    const bool newEpoch = epochOf(time) != epoch_;
+    // Nobody's plan runs out by `time` (an in-place crowd: never), nobody was added and the epoch
+    // holds: no character to visit.
+    if (time < calendar_.earliest() && added_.empty() && !newEpoch) {
         lastChanged_.clear();
         ++generation_;
         return;
     }
-    added_ = false;
-    // Characters plan independently (their choices hash their own index), so any split of the work
-    // gives the same crowd.
+    // Only the characters whose plan runs out by `time` are visited. They plan independently (their
+    // choices hash their own index), so any split of the work gives the same crowd.
+    calendar_.takeDue(time, [this](std::uint32_t c) { return wakeOf(c); }, due_);
     std::atomic<std::uint64_t> planned{0};
-    WorkerPool::shared().parallelFor(size(), 256, [&](std::uint32_t begin, std::uint32_t end) {
-        std::uint64_t count = 0;
-        for (std::uint32_t c = begin; c < end; ++c) count += replan(c, time);
-        planned.fetch_add(count, std::memory_order_relaxed);
-    });
+    WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(due_.size()), 64,
+                                     [&](std::uint32_t begin, std::uint32_t end) {
+                                         std::uint64_t count = 0;
+                                         for (std::uint32_t i = begin; i < end; ++i) count += replan(due_[i], time);
+                                         planned.fetch_add(count, std::memory_order_relaxed);
+                                     });
     planned_ += planned.load();
-    restateRecords();
     lastChanged_.clear();
-    nextDue_ = Agent::kNever;
-    for (std::uint32_t c = 0; c < size(); ++c) {
-        if (changed_[c]) lastChanged_.push_back(c), changed_[c] = 0u;
-        nextDue_ = std::min(nextDue_, agents_[c].due);
+    if (newEpoch) {
+        epoch_ = epochOf(time);
+        lastChanged_.resize(size());
+        std::iota(lastChanged_.begin(), lastChanged_.end(), 0u);
+    } else {
+        for (const std::uint32_t c : due_)
+            if (changed_[c]) lastChanged_.push_back(c);
+        lastChanged_.insert(lastChanged_.end(), added_.begin(), added_.end());
+        std::sort(lastChanged_.begin(), lastChanged_.end());
+        lastChanged_.erase(std::unique(lastChanged_.begin(), lastChanged_.end()), lastChanged_.end());
     }
+    for (const std::uint32_t c : due_) {
+        changed_[c] = 0u;
+        calendar_.file(c, wakeOf(c));
+    }
+    added_.clear();
+    restateRecords();
     ++generation_;
 }
 
@@ -245,7 +266,7 @@ void Crowd::command(std::uint32_t character, double at) {
     // A crossfade in progress finishes first: a segment blends two clips, never three.
     agent.due = std::max(at, current.start + current.motion.timing.y);
     agent.commanded = true;
-    nextDue_ = std::min(nextDue_, agent.due);
+    calendar_.file(character, wakeOf(character));
 }
 
 // Commands check everything before they change anything: a refused one leaves the character as it was.

@@ -20,6 +20,7 @@
 #include "crowd/motion.h"
 #include "crowd/rhythm.h"
 #include "crowd/segment.h"
+#include "crowd/wake_calendar.h"
 #include "crowd/worker_pool.h"
 #include "gpu_types.h"
 #include "model/skinned_model.h"
@@ -144,6 +145,9 @@ private:
     void addCharacter(const Character& character);
     // Plans character `character` up to `time`; returns the segments it planned.
     std::uint32_t replan(std::uint32_t character, double time);
+    // When `character` next needs planning: its plan's end, or its episode's.
+    double wakeOf(std::uint32_t character) const;
+    // Restates the records of lastChanged_ relative to epoch_.
     void restateRecords();
     void animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out) const;
     static void writePose(const MotionState& state, gpu::CharacterRecord& record);
@@ -164,9 +168,10 @@ private:
     double epoch_ = 0.0;
     std::uint64_t planned_ = 0;
     std::vector<std::uint32_t> lastChanged_;
-    std::vector<std::uint8_t> changed_;
-    double nextDue_ = Agent::kNever;  // the earliest time any character's plan runs out
-    bool added_ = false;             // characters added since the last full advance
+    std::vector<std::uint8_t> changed_;  // replanned in this advance (set by replan, cleared after)
+    std::vector<std::uint32_t> added_;   // characters added since the last advance
+    WakeCalendar calendar_;              // when each character's plan next runs out
+    std::vector<std::uint32_t> due_;     // the characters this advance visits
     std::uint64_t generation_ = 0;
     // Key cursors of the sampling jobs, six per joint (two clips) per character: a cache of where each
     // track's keys were last found, private to the thread animating that character.
