@@ -89,7 +89,11 @@ glm::vec2 ClipLibrary::stride(std::uint32_t model, std::uint32_t clip) const {
 }
 
 glm::vec2 ClipLibrary::rootMotion(std::uint32_t model, std::uint32_t clip, float phase) const {
-    return rootMotionAt(rootSamples_.data() + this->clip(model, clip).info.y, phase);
+    return rootMotionAt(rootMotionSamples(model, clip), phase);
+}
+
+const glm::vec2* ClipLibrary::rootMotionSamples(std::uint32_t model, std::uint32_t clip) const {
+    return rootSamples_.data() + this->clip(model, clip).info.y;
 }
 
 std::uint64_t ClipLibrary::bytes() const {

@@ -33,6 +33,8 @@ public:
     glm::vec2 stride(std::uint32_t model, std::uint32_t clip) const;
     // Root motion of a model's clip at `phase` cycles (model space x, z).
     glm::vec2 rootMotion(std::uint32_t model, std::uint32_t clip, float phase) const;
+    // The clip's root-motion samples, for anim::rootMotionAt in loops that evaluate one clip many times.
+    const glm::vec2* rootMotionSamples(std::uint32_t model, std::uint32_t clip) const;
 
     // The flat tables, as the GPU receives them.
     const std::vector<gpu::AnimationModel>& models() const { return models_; }

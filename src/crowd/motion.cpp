@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "anim/root_motion.h"
+
 namespace crowd {
 
 float motionPhase(const gpu::MotionRecord& segment, float elapsed) {
@@ -41,19 +43,24 @@ glm::vec2 rootStep(const anim::ClipLibrary& library, std::uint32_t model, std::u
 // its phases, only its direction and blend weight taken at its middle.
 glm::vec2 travelledCurving(const gpu::MotionRecord& segment, float curved, const anim::ClipLibrary& library,
                            std::uint32_t model) {
-    const std::uint32_t from = segment.clips.x, to = segment.clips.y;
-    auto rootStep = [&](std::uint32_t clip, float a, float b) { return crowd::rootStep(library, model, clip, a, b); };
+    // Planning evaluates this inside its solves (thousands of times a frame in a large milling crowd):
+    // each step's end is the next step's start, so each clip's root motion is looked up once per step.
+    // The arithmetic is the GPU's (shaders/motion.glsl.inc), step for step.
+    const glm::vec2* fromSamples = library.rootMotionSamples(model, segment.clips.x);
+    const glm::vec2* toSamples = library.rootMotionSamples(model, segment.clips.y);
     glm::vec2 offset(0.0f);
     if (curved > 0.0f) {
         const float h = curved / static_cast<float>(MOTION_QUADRATURE_STEPS);
-        float phaseA = motionPhase(segment, 0.0f);
+        const float phaseStart = motionPhase(segment, 0.0f);
+        glm::vec2 fromA = anim::rootMotionAt(fromSamples, phaseStart), toA = anim::rootMotionAt(toSamples, phaseStart);
         for (int k = 0; k < MOTION_QUADRATURE_STEPS; ++k) {
             const float phaseB = motionPhase(segment, h * static_cast<float>(k + 1));
+            const glm::vec2 fromB = anim::rootMotionAt(fromSamples, phaseB), toB = anim::rootMotionAt(toSamples, phaseB);
             const float middle = h * (static_cast<float>(k) + 0.5f);
             const float w = motionWeight(segment, middle);
-            const glm::vec2 step = rootStep(from, phaseA, phaseB) * (1.0f - w) + rootStep(to, phaseA, phaseB) * w;
+            const glm::vec2 step = (fromB - fromA) * (1.0f - w) + (toB - toA) * w;
             offset += turnToWorld(step, motionHeading(segment, middle));
-            phaseA = phaseB;
+            fromA = fromB, toA = toB;
         }
     }
     return offset;
