@@ -35,22 +35,49 @@ glm::vec2 arrivesAt(const Segment& last, double when, const PlanContext& context
     return groundOf(stateOf(last, when, context.library, context.model));
 }
 
-// Newton's method on two unknowns: `at(x)` is where the character arrives, the Jacobian by finite
-// differences of `steps`. Returns the best x seen and its miss.
+// Newton's method on two unknowns: `at(x)` is where the character arrives. The Jacobian comes from
+// finite differences of `steps` at the first guess and is then kept up to date by Broyden's rule from
+// each step taken: one evaluation per iteration instead of three (each is a few quadratures, and a
+// milling crowd of 1,000,000 solves about 10,000 arrivals a frame). Should the update stop helping
+// (a step that misses more than the last), the Jacobian is measured again. Returns the best x seen
+// and its miss.
 template <typename Arrives>
 glm::dvec2 newton(glm::dvec2 x, glm::dvec2 steps, glm::dvec2 largest, glm::vec2 place, const Arrives& at, float& miss) {
     glm::dvec2 best = x;
     miss = std::numeric_limits<float>::infinity();
+    glm::dvec2 byFirst(0.0), bySecond(0.0);  // the Jacobian's columns
+    bool measured = false;
+    glm::vec2 here = at(x);
+    float lastOff = std::numeric_limits<float>::infinity();
     for (int iteration = 0; iteration < kMostIterations; ++iteration) {
-        const glm::vec2 here = at(x);
         const float off = glm::distance(here, place);
         if (off < miss) miss = off, best = x;
         if (off < kArrivalTolerance) break;
-        const glm::dvec2 byFirst = glm::dvec2(at(x + glm::dvec2(steps.x, 0.0)) - here) / steps.x;
-        const glm::dvec2 bySecond = glm::dvec2(at(x + glm::dvec2(0.0, steps.y)) - here) / steps.y;
+        if (!measured || off >= lastOff) {
+            byFirst = glm::dvec2(at(x + glm::dvec2(steps.x, 0.0)) - here) / steps.x;
+            bySecond = glm::dvec2(at(x + glm::dvec2(0.0, steps.y)) - here) / steps.y;
+            measured = true;
+        }
+        lastOff = off;
         glm::dvec2 step;
         if (!solve2(byFirst, bySecond, glm::dvec2(place - here), step)) break;
-        x += damped(step, largest);
+        step = damped(step, largest);
+        x += step;
+        const glm::vec2 next = at(x);
+        // Broyden: J += (df - J dx) dx^T / (dx . dx), so that J dx = df for the step just taken.
+        const glm::dvec2 df = glm::dvec2(next - here);
+        const glm::dvec2 predicted = byFirst * step.x + bySecond * step.y;
+        const double length2 = glm::dot(step, step);
+        if (length2 > 0.0) {
+            const glm::dvec2 correction = (df - predicted) / length2;
+            byFirst += correction * step.x;
+            bySecond += correction * step.y;
+        }
+        here = next;
+    }
+    if (kMostIterations > 0) {
+        const float off = glm::distance(here, place);
+        if (off < miss) miss = off, best = x;
     }
     return best;
 }
