@@ -147,6 +147,7 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["pass_clock"] = r.passes.passClock;
         row["skin_vertices_per_s"] = skinVerticesPerSecond(r);
         row["cpu_plan_ms"] = r.frame.medianPlanMs;  // Crowd::advanceTo: the living behaviours' planning
+        row["p95_cpu_plan_ms"] = r.frame.p95PlanMs;
         row["cpu_animate_ms"] = r.frame.medianAnimateMs;
         row["cpu_record_ms"] = r.frame.medianRecordMs;
         row["scene"] = r.frame.scene;

@@ -59,6 +59,7 @@ RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t wa
     summary.p95FrameMs = percentile(intervals, 0.95);
     summary.fps = summary.medianFrameMs > 0.0 ? 1000.0 / summary.medianFrameMs : 0.0;
     summary.medianPlanMs = median(plan);
+    summary.p95PlanMs = percentile(plan, 0.95);
     summary.medianAnimateMs = median(animate);
     summary.medianRecordMs = median(record);
     for (auto& [pass, values] : passes) summary.medianGpuMs[pass] = median(values);
@@ -136,6 +137,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["p95_frame_ms"] = s.p95FrameMs;
     json["frame_clock"] = s.frameClock;
     json["median_cpu_plan_ms"] = s.medianPlanMs;
+    json["p95_cpu_plan_ms"] = s.p95PlanMs;
     json["median_cpu_animate_ms"] = s.medianAnimateMs;
     json["median_cpu_record_ms"] = s.medianRecordMs;
     json["median_gpu_ms"] = s.medianGpuMs;

@@ -34,6 +34,7 @@ struct RunSummary {
     std::string frameClock = "wall clock between frame starts";
     double fps = 0.0;             // 1000 / medianFrameMs
     double medianPlanMs = 0.0;    // CPU: motion planning (segments whose plan ran out)
+    double p95PlanMs = 0.0;       // and its 95th percentile: a planning hitch shows here
     double medianAnimateMs = 0.0; // CPU
     double medianRecordMs = 0.0;  // CPU
     std::map<std::string, double> medianGpuMs;  // per pass, from `passClock`
