@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
 #include <set>
@@ -243,5 +244,203 @@ TEST_F(GpuTest, ACasterOutsideTheViewStillCastsIntoIt) {
             EXPECT_EQ(on.shadowState & SHADOW_CASTS_BIT, 0u);
             EXPECT_EQ(shadowPixels, 0u);
         }
+    }
+}
+
+namespace {
+
+// Six soldiers in a row along x, each with its own heading and phase, tinted `tint`.
+std::vector<crowd::Character> row(const model::SkinnedModel& soldier, float tint) {
+    const float headings[6] = {0.0f, 1.0f, 2.2f, 3.5f, 4.4f, 5.6f};
+    std::vector<crowd::Character> characters;
+    for (int i = 0; i < 6; ++i) {
+        crowd::Character c;
+        c.clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
+        c.timeOffset = 0.17f * static_cast<float>(i);
+        c.position = glm::vec3(2.5f * (static_cast<float>(i) - 2.5f), 0.0f, 0.0f);
+        c.heading = headings[i];
+        c.tint = glm::vec3(tint);
+        characters.push_back(c);
+    }
+    return characters;
+}
+
+// A camera 35 degrees above the row's middle, at the distance where a soldier's pose sphere is 31 px
+// across in a 320x120 image: just under the 32 px switch to impostors.
+app::Camera switchCamera(const model::SkinnedModel& soldier) {
+    render::Camera camera;
+    const float focal = 120.0f / (2.0f * std::tan(0.5f * camera.verticalFov));
+    const float distance = 2.0f * soldier.poseSphere.w * focal / 31.0f;
+    camera.target = glm::vec3(0.0f, glm::vec3(soldier.poseSphere).y, 0.0f);
+    camera.eye = camera.target + distance * glm::vec3(0.0f, std::sin(35.0f * kDegree), std::cos(35.0f * kDegree));
+    camera.nearPlane = 0.5f;
+    camera.farPlane = 4.0f * distance;
+    return test::appCamera(camera);
+}
+
+// The row as meshes or impostors, with shadows on or off.
+app::Rgba8Image renderRow(test::TestRenderer& renderer, const app::Camera& camera, bool impostors, bool shadows) {
+    render::CullSettings cull = renderer.cull();
+    cull.impostors = impostors;
+    renderer.setCull(cull);
+    renderer.setShadows(shadows);
+    renderer.camera = camera;
+    renderer.renderFrame(0.7f);
+    renderer.finish();
+    const std::vector<app::FrameStats> stats = renderer.takeStats();
+    EXPECT_EQ(impostors ? stats.back().lods.impostors : stats.back().lods.characters[2], 6u);
+    if (shadows) {
+        EXPECT_EQ(impostors ? stats.back().lods.shadowImpostors : stats.back().lods.shadowCharacters[2], 6u);
+    }
+    return renderer.readback();
+}
+
+}  // namespace
+
+// At the switch size, the impostors' shadows (quads facing the light) fall where the meshes' shadows fall.
+// Ground pixels only (a soldier's pixels are those its tint changes, in either picture): the shadows
+// darken (by over 8/255) sets of ground pixels whose overlap is at least 60 % of their union, whose
+// sizes are within 25 %, and each soldier's shadow's centroid is within 3 px of its mesh's (a soldier
+// is 31 px across, its shadow about 50 ground pixels). The impostor's silhouette is its atlas
+// cell's, up to half a view step (11.25 degrees) and half a frame away from the mesh's, hence the
+// tolerance; a quad facing the camera, at the wrong place or with the wrong cell fails. The impostors
+// do not shadow themselves: their pixels are as bright with shadows as without, within 3 %, as the
+// meshes' are within 3 % (the quads are looked up a pose-sphere radius nearer the light).
+TEST_F(GpuTest, AnImpostorCastsItsShadowWhereTheMeshCastsItsAtTheSwitchSize) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    crowd::Crowd lit(soldier, row(soldier, 1.0f));
+    crowd::Crowd dim(soldier, row(soldier, 0.6f));
+    test::RendererOptions options;
+    options.size = {320, 120};
+    options.method = skin::Method::Compute;
+    options.cull.impostors = true;  // bake once; renderRow switches levels
+    options.cull.hysteresis = 0.0f;
+    test::TestRenderer litRenderer(*context, lit, options);
+    options.atlas = litRenderer.impostorAtlas();
+    test::TestRenderer dimRenderer(*context, dim, options);
+    const app::Camera camera = switchCamera(soldier);
+    std::vector<bool> shadow[2];
+    double brightness[2] = {};
+    for (const bool impostors : {false, true}) {
+        const app::Rgba8Image on = renderRow(litRenderer, camera, impostors, true);
+        const app::Rgba8Image off = renderRow(litRenderer, camera, impostors, false);
+        const app::Rgba8Image dimOff = renderRow(dimRenderer, camera, impostors, false);
+        std::vector<bool>& mask = shadow[impostors ? 1 : 0];
+        mask = darkened(on, off, 8);
+        double sumOn = 0.0, sumOff = 0.0;
+        for (std::size_t i = 0; i < mask.size(); ++i) {
+            bool character = false;
+            for (int ch = 0; ch < 3; ++ch) character = character || off.pixels[4 * i + ch] != dimOff.pixels[4 * i + ch];
+            if (!character) continue;
+            mask[i] = false;  // ground only
+            for (int ch = 0; ch < 3; ++ch) sumOn += on.pixels[4 * i + ch], sumOff += off.pixels[4 * i + ch];
+        }
+        brightness[impostors ? 1 : 0] = sumOn / std::max(sumOff, 1.0);
+        if (std::getenv("CROWD_KEEP_IMAGES")) {
+            app::writePng(test::artifactPath(impostors ? "impostor-shadow.png" : "mesh-shadow.png"), on);
+        }
+    }
+    // Character pixels of either picture are left out of both masks, so both compare the same ground. Each
+    // shadow pixel belongs to the soldier whose feet are nearest across the image.
+    const glm::mat4 viewProjection = test::internalCamera(camera).viewProjection(320.0f / 120.0f);
+    float feet[6];
+    for (int s = 0; s < 6; ++s) {
+        const glm::vec4 clip = viewProjection * glm::vec4(2.5f * (static_cast<float>(s) - 2.5f), 0.0f, 0.0f, 1.0f);
+        feet[s] = (clip.x / clip.w * 0.5f + 0.5f) * 320.0f;
+    }
+    std::size_t both = 0, either = 0, counts[2] = {};
+    glm::vec2 centroid[2][6] = {};
+    std::size_t soldierCounts[2][6] = {};
+    for (std::size_t i = 0; i < shadow[0].size(); ++i) {
+        const glm::vec2 pixel(static_cast<float>(i % 320), static_cast<float>(i / 320));
+        int nearest = 0;
+        for (int s = 1; s < 6; ++s)
+            if (std::abs(pixel.x - feet[s]) < std::abs(pixel.x - feet[nearest])) nearest = s;
+        for (int k = 0; k < 2; ++k)
+            if (shadow[k][i]) centroid[k][nearest] += pixel, ++soldierCounts[k][nearest], ++counts[k];
+        both += shadow[0][i] && shadow[1][i];
+        either += shadow[0][i] || shadow[1][i];
+    }
+    float farthest = 0.0f;
+    for (int s = 0; s < 6; ++s) {
+        EXPECT_GT(soldierCounts[0][s], 10u) << "soldier " << s << " casts a shadow on the ground";
+        EXPECT_GT(soldierCounts[1][s], 10u) << "soldier " << s << " as an impostor casts a shadow on the ground";
+        const glm::vec2 mesh = centroid[0][s] / static_cast<float>(std::max<std::size_t>(soldierCounts[0][s], 1));
+        const glm::vec2 impostor = centroid[1][s] / static_cast<float>(std::max<std::size_t>(soldierCounts[1][s], 1));
+        farthest = std::max(farthest, glm::distance(mesh, impostor));
+    }
+    const double overlap = static_cast<double>(both) / static_cast<double>(std::max<std::size_t>(either, 1));
+    std::printf("shadow pixels: mesh %zu, impostor %zu, overlap %.2f, a soldier's centroids at most %.2f px apart; "
+                "brightness with shadows / without: mesh %.3f, impostor %.3f\n",
+                counts[0], counts[1], overlap, farthest, brightness[0], brightness[1]);
+    EXPECT_GE(overlap, 0.6);
+    EXPECT_NEAR(static_cast<double>(counts[1]) / static_cast<double>(counts[0]), 1.0, 0.25);
+    EXPECT_LT(farthest, 3.0f);
+    EXPECT_NEAR(brightness[0], 1.0, 0.03);
+    EXPECT_NEAR(brightness[1], 1.0, 0.03);
+}
+
+// The colour pass does not change its look with the shadow's level of detail: a crowd drawn with shadow
+// LOD on and off (its shadows from LOD 2 where the view draws LOD 0 and 1) differs only in pixels that
+// a shadow darkens in one of the two pictures; everywhere else (lit characters and ground) the pictures
+// are identical. In shadow, at most 2 % of the image differs by over 24/255 in a channel (shadow edges).
+TEST_F(GpuTest, ShadowLodChangesOnlyShadowedPixels) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    app::SceneOptions scene;
+    scene.count = 100;
+    crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
+    test::RendererOptions options;
+    options.size = {320, 180};
+    options.method = skin::Method::Compute;
+    options.shadowMapSize = 256;  // casters about 30 texels across (LOD 2), as in a large scene's 2048 map
+    test::TestRenderer renderer(*device, crowd, options);
+    // Low over the crowd's edge: the nearest soldiers at LOD 0 and 1 in view.
+    const app::CrowdShape shape = test::shapeOf(crowd);
+    renderer.camera.target = shape.center + glm::vec3(0.0f, 1.0f, 0.0f);
+    renderer.camera.eye = shape.center + glm::vec3(0.0f, 4.0f, shape.radius + 3.0f);
+    app::Rgba8Image images[3];  // shadow LOD on, off, no shadows
+    std::uint64_t shadowTriangles[2] = {};
+    for (int k = 0; k < 3; ++k) {
+        render::CullSettings cull = renderer.cull();
+        cull.shadowLod = k == 0;
+        renderer.setCull(cull);
+        renderer.setShadows(k < 2);
+        renderer.renderFrame(0.5f);
+        renderer.finish();
+        const std::vector<app::FrameStats> stats = renderer.takeStats();
+        if (k < 2) shadowTriangles[k] = stats.back().lods.shadowTriangles[0] + stats.back().lods.shadowTriangles[1] +
+                                        stats.back().lods.shadowTriangles[2];
+        if (k == 0) {
+            EXPECT_GT(stats.back().lods.characters[0] + stats.back().lods.characters[1], 0u) << "some finer in view";
+        }
+        images[k] = renderer.readback();
+    }
+    const std::vector<bool> shadowOn = darkened(images[0], images[2], 0);
+    const std::vector<bool> shadowOff = darkened(images[1], images[2], 0);
+    std::size_t changed = 0, changedOutsideShadow = 0, changedMuch = 0;
+    for (std::size_t i = 0; i < shadowOn.size(); ++i) {
+        int most = 0;
+        for (int ch = 0; ch < 3; ++ch)
+            most = std::max(most, std::abs(int(images[0].pixels[4 * i + ch]) - int(images[1].pixels[4 * i + ch])));
+        if (most == 0) continue;
+        ++changed;
+        // A pixel any shadow reaches is darker in some channel than without shadows.
+        bool shadowed = false;
+        for (int ch = 0; ch < 3; ++ch)
+            shadowed = shadowed || images[0].pixels[4 * i + ch] < images[2].pixels[4 * i + ch] ||
+                       images[1].pixels[4 * i + ch] < images[2].pixels[4 * i + ch];
+        changedOutsideShadow += shadowed ? 0 : 1;
+        changedMuch += most > 24 ? 1 : 0;
+    }
+    const double muchFraction = static_cast<double>(changedMuch) / static_cast<double>(shadowOn.size());
+    std::printf("shadow triangles %llu with shadow LOD, %llu without; %zu pixels differ, %.2f %% by over 24/255\n",
+                static_cast<unsigned long long>(shadowTriangles[0]), static_cast<unsigned long long>(shadowTriangles[1]),
+                changed, 100.0 * muchFraction);
+    EXPECT_LT(shadowTriangles[0], shadowTriangles[1]);
+    EXPECT_EQ(changedOutsideShadow, 0u);
+    EXPECT_LE(muchFraction, 0.02);
+    if (std::getenv("CROWD_KEEP_IMAGES")) {
+        app::writePng(test::artifactPath("shadow-lod-on.png"), images[0]);
+        app::writePng(test::artifactPath("shadow-lod-off.png"), images[1]);
     }
 }

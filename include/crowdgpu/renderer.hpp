@@ -208,6 +208,7 @@ public:
     // resources. setImpostors(true) the first time bakes the atlas: setup work (recordSetup again).
     void setMethod(Method method);
     void setShadows(bool on);
+    void setShadowLod(bool on);
     void setCulling(Culling culling, bool lod);
     void setImpostors(bool on);
     void setAnimation(Animation animation);

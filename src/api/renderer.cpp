@@ -255,6 +255,13 @@ void Renderer::setShadows(bool on) {
     data_->settings.shadows = on;
 }
 
+void Renderer::setShadowLod(bool on) {
+    RendererSettings s = data_->settings;
+    s.shadowLod = on;
+    detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
+    data_->settings = s;
+}
+
 void Renderer::setCulling(Culling culling, bool lod) {
     RendererSettings s = data_->settings;
     s.culling = culling;

@@ -76,6 +76,7 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.meshCapacity = options.meshCapacity;
     settings.framesInFlight = options.framesInFlight;
     settings.shadows = options.shadows;
+    settings.shadowLod = options.cull.shadowLod;
     settings.shadowMapSize = options.shadowMapSize;
     return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
 }
@@ -98,6 +99,7 @@ void TestRenderer::setCull(const render::CullSettings& cull) {
                                                               : crowdgpu::Culling::Gpu;
     setCulling(culling, cull.lod, cull.impostors);
     setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
+    library().setShadowLod(cull.shadowLod);
 }
 
 gpu::CullUniforms TestRenderer::cullUniforms() const {
