@@ -2,7 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // The cull pass (niagara's drawcull): one thread per character tests its pose sphere against the
 // view frustum, picks its level of detail with hysteresis, and appends it to the visible list of
-// its (model, LOD) bucket. The CPU never sees per-character visibility. With a mesh-level cap, a
+// its (model, LOD) bucket; with shadows, it decides whether and at which level the character casts
+// (cull.glsl.inc, shadowState) and lists it among its shadow level's casters. The CPU never sees
+// per-character visibility. With a mesh-level cap, a
 // character that qualifies for a mesh level is listed as a candidate of the cut instead
 // (mesh_cut.glsl.inc): which ones keep their meshes is known only once all are counted.
 #include "gpu_types.h"
@@ -12,13 +14,9 @@
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 1) readonly buffer Models { ModelRecord models[]; };
 layout(std430, set = 0, binding = 6) buffer LodState { uint lodState[]; };
 layout(std430, set = 0, binding = 15) writeonly buffer Candidates { uvec2 candidates[]; };
-
-// Impostors cast no shadow (they are not drawn into the shadow map), so only those in view are kept.
-bool drawnAsImpostor(vec4 sphere) { return cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere); }
 
 void listMeshCandidate(uint c, float size, bool drawnIfDemoted) {
     uvec2 candidate = meshCandidate(c, size, drawnIfDemoted);
@@ -29,26 +27,27 @@ void listMeshCandidate(uint c, float size, bool drawnIfDemoted) {
 void cullCharacter(uint c) {
     CharacterRecord character = characters[c];
     vec4 sphere = worldSphere(character, models[character.ids.x]);
-    bool inView = cull.flags.y == 0u ||
-                  (cull.limits.y != 0u ? casterInFrustum(cull.planes, sphere, cull.light.xyz)
-                                       : sphereInFrustum(cull.planes, sphere));
+    bool inView = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
     float size = projectedDiameter(sphere, cull.camera);
     // Every character's level is kept up to date, visible or not, so culling never changes a level.
     uint lod = 0u;
     if (cull.flags.z != 0u) lod = chooseLod(size, lodState[c], cull.lod);
     lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
+    uint shadow = shadowState(sphere, lod, inView, cull.planes, cull.lightPlanes, cull.light.xyz, cull.shadow,
+                              cull.flags, cull.limits, cull.shadowFlags);
+    shadowStates[c] = shadow;
     if (lod == IMPOSTOR_LEVEL) {
-        if (drawnAsImpostor(sphere)) appendImpostor(c);
+        placeImpostor(c, shadow);
         return;
     }
-    if (!inView) return;
+    if (!inView && (shadow & SHADOW_CASTS_BIT) == 0u) return;
     // The mesh levels hold at most limits.z characters (their skinned vertices are sized for that): the
     // cut keeps the largest on screen and demotes the rest, farthest first.
     if (cull.limits.z != 0u) {
-        listMeshCandidate(c, size, drawnAsImpostor(sphere));
+        listMeshCandidate(c, size, inView);
         return;
     }
-    appendToBucket(c, lod);
+    placeMesh(c, lod, shadow);
 }
 
 void main() {

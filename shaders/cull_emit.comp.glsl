@@ -4,6 +4,11 @@
 // vkCmdDrawIndexedIndirectCount, drawing its LOD's index range from its skinned vertices;
 // firstInstance carries the character to the shaders. For the vertex-shader baseline, the same draw
 // from the bind pose in the character's own slot (culled characters' slots stay zeroed).
+//
+// The shadow pass's draws come from the same skinned vertices: a caster draws its shadow level's index
+// range, a prefix of its skinned level's vertices (cull.glsl.inc, shadowState), appended after the
+// colour draws in any order (a depth-only pass does not depend on it). A character skinned only for
+// its shadow (out of view) keeps its colour draw with no instance, so the colour pass skips it.
 #include "gpu_types.h"
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
@@ -11,15 +16,17 @@ layout(local_size_x = CULL_WORKGROUP_SIZE) in;
 layout(push_constant) uniform Push {
     uint fixedLayout;       // 1: every character has its own skinned slot (the static method)
     uint characterDrawsOn;  // 1: write the per-character draws too
+    uint shadowDrawBase;    // where the shadow draws start in `draws` (its colour draws' capacity)
 };
 layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Frames { BucketFrame frames[]; };
 layout(std430, set = 0, binding = 5) readonly buffer Visible { uint visible[]; };
-layout(std430, set = 0, binding = 7) readonly buffer Totals { DrawTotals totals; };
+layout(std430, set = 0, binding = 7) buffer Totals { DrawTotals totals; };
 layout(std430, set = 0, binding = 10) writeonly buffer Draws { DrawIndexedCommand draws[]; };
 layout(std430, set = 0, binding = 11) writeonly buffer CharacterDraws { DrawIndexedCommand characterDraws[]; };
+layout(std430, set = 0, binding = 17) readonly buffer ShadowStates { uint shadowStates[]; };
 
 void main() {
     uint stride = gl_NumWorkGroups.x * CULL_WORKGROUP_SIZE;
@@ -31,10 +38,20 @@ void main() {
         BucketRecord bucket = buckets[b];
         uint k = i - frames[b].drawBase;
         uint c = visible[bucket.list.z + k];
+        uint shadow = shadowStates[c];
+        uint inView = (shadow & SHADOW_IN_VIEW_BIT) != 0u ? 1u : 0u;
+        bool casts = (shadow & SHADOW_CASTS_BIT) != 0u;
+        BucketRecord shadowBucket = buckets[b - bucket.list.y + (shadow & SHADOW_LEVEL_MASK)];
         uint vertexOffset = fixedLayout != 0u ? bucket.fixedLayout.x + characters[c].ids.z * bucket.mesh.z
                                               : frames[b].vertexBase + k * bucket.mesh.z;
-        draws[i] = DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(vertexOffset), c);
-        if (characterDrawsOn != 0u)
-            characterDraws[c] = DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(bucket.mesh.w), c);
+        draws[i] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(vertexOffset), c);
+        if (casts)
+            draws[shadowDrawBase + atomicAdd(totals.shadowDrawCount, 1u)] =
+                DrawIndexedCommand(shadowBucket.mesh.y, 1u, shadowBucket.mesh.x, int(vertexOffset), c);
+        if (characterDrawsOn != 0u) {
+            characterDraws[c] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(bucket.mesh.w), c);
+            characterDraws[cull.flags.x + c] = DrawIndexedCommand(shadowBucket.mesh.y, casts ? 1u : 0u,
+                                                                  shadowBucket.mesh.x, int(bucket.mesh.w), c);
+        }
     }
 }

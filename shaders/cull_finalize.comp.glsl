@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // After culling: prefix sums over the buckets (at most MAX_MODELS x LOD_COUNT, so one thread walks
 // them) place each bucket's characters in the skinned vertex buffer and the compacted draw list, and
-// write the indirect commands whose counts only the GPU knows.
+// write the indirect commands whose counts only the GPU knows (the colour pass's and the shadow pass's).
 #include "gpu_types.h"
 
 layout(local_size_x = 1) in;
@@ -24,8 +24,11 @@ void main() {
         uint count = frames[b].count;
         frames[b].vertexBase = vertexBase;
         frames[b].drawBase = drawBase;
-        // vs-instanced: one instanced draw per bucket; instances index the bucket's visible list.
+        // vs-instanced: one instanced draw per bucket; instances index the bucket's visible list. Its
+        // shadow pass: one per bucket too, after them, over the bucket's list of casters at this level.
         bucketDraws[b] = DrawIndexedCommand(bucket.mesh.y, count, bucket.mesh.x, int(bucket.mesh.w), bucket.list.z);
+        bucketDraws[cull.flags.w + b] = DrawIndexedCommand(bucket.mesh.y, frames[b].shadowCount, bucket.mesh.x,
+                                                           int(bucket.mesh.w), cull.shadowFlags.y + bucket.list.z);
         // compute skinning: x = groups of characters (a grid-stride loop covers any past the limit),
         // y = groups of CULL_WORKGROUP_SIZE vertices.
         skinDispatches[b] = uvec4(groupsFor(count, bucket.fixedLayout.y), groupsFor(bucket.mesh.z, CULL_WORKGROUP_SIZE), 1u, 0u);
@@ -34,5 +37,6 @@ void main() {
     }
     totals.drawCount = drawBase;
     totals.skinnedVertices = vertexBase;
+    totals.shadowDrawCount = 0u;  // the emit pass appends the shadow draws
     totals.emitDispatch = uvec4(groupsFor(drawBase, CULL_WORKGROUP_SIZE), 1u, 1u, 0u);
 }

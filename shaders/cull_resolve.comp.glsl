@@ -13,8 +13,6 @@
 
 layout(local_size_x = MESH_CUT_WORKGROUP_SIZE) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
-
 void main() {
     if (meshCut.keepAll != 0u) return;  // the same in every invocation, as are the branches below
     // cut.x: the fine bucket of the smallest kept size; cut.y: how many of exactly that size are kept.

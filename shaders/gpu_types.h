@@ -23,6 +23,12 @@ using uint = std::uint32_t;
 // The impostor level: after the mesh levels 0..LOD_COUNT-1, a character is a camera-facing quad
 // textured from its model's atlas (render/impostor_atlas.h). lodState stores level + 1 as for the others.
 #define IMPOSTOR_LEVEL LOD_COUNT
+// A character's shadow this frame, one word written by culling (DrawLists::shadowStates): the level
+// it is drawn at in the shadow map (0-2, or IMPOSTOR_LEVEL: a quad facing the light), whether it casts,
+// and whether it is in the camera's view (drawn in the colour pass).
+#define SHADOW_LEVEL_MASK 3u
+#define SHADOW_CASTS_BIT 4u
+#define SHADOW_IN_VIEW_BIT 8u
 // Threads per workgroup of the cull, emit and skinning compute passes.
 #define CULL_WORKGROUP_SIZE 64
 
@@ -90,7 +96,7 @@ struct BucketFrame {
     uint count;       // visible characters at this LOD
     uint vertexBase;  // their first skinned vertex (dense: character k of the bucket at base + k x vertices)
     uint drawBase;    // their first draw in the compacted draw list
-    uint unused;
+    uint shadowCount; // shadow casters at this LOD (listed after every visible list, shaders/cull_lists.glsl.inc)
 };
 
 // VkDrawIndexedIndirectCommand, as the cull passes write it.
@@ -106,7 +112,7 @@ struct DrawIndexedCommand {
 struct DrawTotals {
     uint drawCount;       // visible characters = draws in the compacted list
     uint skinnedVertices; // vertices the skinning pass writes
-    uint unused0;
+    uint shadowDrawCount; // mesh shadow casters = draws in the shadow pass's compacted list
     uint unused1;
     uvec4 emitDispatch;   // indirect dispatch of the emit pass (x groups, y = z = 1)
 };
@@ -127,7 +133,7 @@ struct ImpostorFrame {
     uint meshCount;      // with a cap: characters that qualified for a mesh level, visible or caster (the
                          // candidates of the cut, MeshCut)
     uint demoted;        // of those, sent to the impostor level because the mesh levels were full
-    uint unused;
+    uint shadowCount;    // impostor-level characters that cast a shadow (a quad facing the light)
 };
 
 // ---- The mesh-level cap's cut: farthest first (render/mesh_cut.h; shaders/cull_cutoff, cull_split,
@@ -160,10 +166,11 @@ struct MeshCut {
 // of IMPOSTOR_QUADS_PER_DRAW quads, so a frame issues one draw per that many impostors.
 #define IMPOSTOR_QUADS_PER_DRAW 262144u
 
-// The impostor draws of a frame, written after culling (render/impostor_draw.h).
+// The impostor draws of a frame, written after culling (render/impostor_draw.h): the colour pass's, then
+// the shadow pass's.
 struct ImpostorDrawsHeader {
     uint drawCount;  // draws below (the count of vkCmdDrawIndexedIndirectCount)
-    uint unused0;
+    uint shadowDrawCount;  // the shadow pass's, after the colour pass's maximum (quads facing the light)
     uint unused1;
     uint unused2;
 };
@@ -258,6 +265,11 @@ struct CullUniforms {
                      // z: most characters at a mesh level (LOD 0-2) in a frame, the smallest on screen
                      // beyond it are demoted to impostors (0: no cap), w: unused
     vec4 light;      // xyz: unit vector towards the light (shadow casters), w: unused
+    vec4 lightPlanes[6];  // the shadow map's volume (the light's orthographic view-projection), as planes
+    vec4 shadow;     // x: shadow-map texels per world unit, y: LOD 0 and z: LOD 1 thresholds (a caster's
+                     // sphere diameter in texels), w: below this diameter in texels a caster is not drawn
+    uvec4 shadowFlags;  // x: 1 = shadow LOD (levels from the shadow map; else the view's level),
+                        // y, z, w: unused
 };
 
 // Push constants of the skinning passes: which bucket, and where its characters come from.

@@ -3,6 +3,8 @@
 // An impostor's pixel: the atlas's albedo and model-space normal (coverage-weighted, so divided by
 // coverage), the normal turned by the heading, and the same lighting as the mesh (shade()), so the
 // switch from mesh to impostor keeps the character's brightness. Texels under half coverage are cut.
+// Its shadow is looked up a pose-sphere radius nearer the light: the quad stands in for a body as deep as
+// that sphere, and its own shadow (a quad facing the light through the sphere's centre) must not fall on it.
 #include "gpu_types.h"
 #include "shading.glsl.inc"
 
@@ -16,6 +18,7 @@ layout(location = 1) flat in uint vLayer;
 layout(location = 2) flat in vec3 vTint;
 layout(location = 3) flat in vec2 vHeading;
 layout(location = 4) in vec3 vWorld;
+layout(location = 5) flat in float vRadius;
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -26,5 +29,7 @@ void main() {
     vec3 n = packed.rgb / packed.a * 2.0 - 1.0;
     float c = vHeading.x, s = vHeading.y;
     vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);
-    outColor = vec4(shade(scene, normal, albedo.rgb / albedo.a * vTint, vWorld, cameraPosition.xyz), 1.0);
+    vec3 lit = shadeLitFrom(scene, normal, albedo.rgb / albedo.a * vTint, vWorld,
+                            vWorld + scene.lightDirection.xyz * vRadius, cameraPosition.xyz);
+    outColor = vec4(lit, 1.0);
 }

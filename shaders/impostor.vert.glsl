@@ -4,7 +4,9 @@
 // impostor v / 4; indexed quads share them, and the draw's cost follows the vertices), a quad facing
 // the eye (spherical billboard over the model's pose sphere, turned by the character's heading) that
 // shows the atlas cell of its clip, phase and view direction. No bones, no skinned vertices: only the
-// record.
+// record. The shadow pass draws the same quads facing the light (SHADOW_PASS, with the light's scene set):
+// for an orthographic light, the atlas cell seen from the light's direction is the character's
+// silhouette as the light sees it, at the pose the colour pass shows.
 #include "gpu_types.h"
 #include "impostor_set.glsl.inc"
 #include "impostor_pose.glsl.inc"
@@ -12,12 +14,14 @@
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(push_constant) uniform Push { vec4 cameraPosition; };
+layout(constant_id = 0) const bool SHADOW_PASS = false;
 
 layout(location = 0) out vec2 vUv;
 layout(location = 1) flat out uint vLayer;
 layout(location = 2) flat out vec3 vTint;
 layout(location = 3) flat out vec2 vHeading;  // cos, sin
 layout(location = 4) out vec3 vWorld;
+layout(location = 5) flat out float vRadius;
 
 // Model frame to world: the heading's turn about +y (as worldSphere and characterTransform turn it).
 vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.z - s * v.x); }
@@ -32,7 +36,7 @@ void main() {
     float s = sin(character.placement.w);
     float scale = character.tint.w;
     vec3 centre = character.placement.xyz + turn(m.square.xyz * scale, c, s);
-    vec3 towards = normalize(cameraPosition.xyz - centre);
+    vec3 towards = SHADOW_PASS ? scene.lightDirection.xyz : normalize(cameraPosition.xyz - centre);
     vec3 towardsModel = vec3(c * towards.x - s * towards.z, towards.y, c * towards.z + s * towards.x);
     ImpostorPose pose = impostorPose(character);
     uint cell = impostorCell(m, pose.clip, pose.phase, towardsModel);
@@ -48,4 +52,5 @@ void main() {
     vTint = character.tint.rgb;
     vHeading = vec2(c, s);
     vWorld = world;
+    vRadius = m.square.w * scale;
 }

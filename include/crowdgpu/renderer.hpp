@@ -101,6 +101,10 @@ struct RendererSettings {
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
     bool shadows = true;
+    // Casters drawn into the shadow map at a level from their size in the map (texels of pose-sphere
+    // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at
+    // all; off: at their level in view.
+    bool shadowLod = true;
     std::uint32_t shadowMapSize = 2048;
     std::uint32_t framesInFlight = 2;
     // A renderer of the same models in the same order whose baked impostor atlas this one shares
@@ -132,6 +136,10 @@ struct FrameCounts {
     std::uint32_t impostors;
     std::uint32_t demoted;  // impostors only because the mesh capacity was full
     std::uint64_t skinnedVertices;  // what the skinning pass skinned: visible characters x their LOD's vertices
+    // The shadow pass: mesh casters and their triangles per shadow level, impostors casting a quad.
+    std::uint32_t shadowCharacters[3];
+    std::uint64_t shadowTriangles[3];
+    std::uint32_t shadowImpostors;
 };
 
 // This frame's skinned characters, for the host's own passes (G-buffer, outline, picking): bind
@@ -200,6 +208,7 @@ public:
     // resources. setImpostors(true) the first time bakes the atlas: setup work (recordSetup again).
     void setMethod(Method method);
     void setShadows(bool on);
+    void setShadowLod(bool on);
     void setCulling(Culling culling, bool lod);
     void setImpostors(bool on);
     void setAnimation(Animation animation);

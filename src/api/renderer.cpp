@@ -44,6 +44,10 @@ render::CullSettings cullSettings(const RendererSettings& s) {
     cull.hysteresis = s.lodHysteresis;
     cull.impostors = s.impostors;
     cull.impostorThreshold = s.impostorThreshold;
+    // A shadow shows no more than a view of the same size would: the view's thresholds, read in texels.
+    cull.shadowLod = s.shadowLod;
+    cull.shadowLodThresholds[0] = s.lodThresholds[0];
+    cull.shadowLodThresholds[1] = s.lodThresholds[1];
     return cull;
 }
 
@@ -231,6 +235,9 @@ FrameCounts Renderer::counts(std::uint32_t slot) const {
     result.impostors = c.impostors;
     result.demoted = c.demoted;
     result.skinnedVertices = c.skinnedVertices;
+    for (int l = 0; l < 3; ++l)
+        result.shadowCharacters[l] = c.shadowCharacters[l], result.shadowTriangles[l] = c.shadowTriangles[l];
+    result.shadowImpostors = c.shadowImpostors;
     return result;
 }
 
@@ -246,6 +253,13 @@ void Renderer::setMethod(Method method) {
 void Renderer::setShadows(bool on) {
     data_->frame->setShadows(on);
     data_->settings.shadows = on;
+}
+
+void Renderer::setShadowLod(bool on) {
+    RendererSettings s = data_->settings;
+    s.shadowLod = on;
+    detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
+    data_->settings = s;
 }
 
 void Renderer::setCulling(Culling culling, bool lod) {

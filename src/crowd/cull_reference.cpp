@@ -55,40 +55,70 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
     return std::clamp(previous - 1u, finest, coarsest);
 }
 
+std::uint32_t shadowState(const glm::vec4& sphere, std::uint32_t viewLod, bool inView, const gpu::CullUniforms& cull) {
+    std::uint32_t state = inView ? SHADOW_IN_VIEW_BIT : 0u;
+    const bool shadowLod = cull.shadowFlags.x != 0u && cull.flags.z != 0u;
+    const float texels = 2.0f * sphere.w * cull.shadow.x;
+    std::uint32_t level = viewLod;
+    if (shadowLod && viewLod != IMPOSTOR_LEVEL)
+        level = std::max(viewLod, (texels < cull.shadow.y ? 1u : 0u) + (texels < cull.shadow.z ? 1u : 0u));
+    state |= level;
+    if (cull.limits.y == 0u) return state;
+    const bool reaches = cull.flags.y == 0u || (casterInFrustum(cull.planes, sphere, glm::vec3(cull.light)) &&
+                                                sphereInFrustum(cull.lightPlanes, sphere));
+    if (reaches && !(shadowLod && texels < cull.shadow.w)) state |= SHADOW_CASTS_BIT;
+    return state;
+}
+
 namespace {
 
-// A character that qualifies for a mesh level: in view (or a caster), at LOD 0-2.
+// A character that qualifies for a mesh level: in view or a caster, at LOD 0-2.
 struct MeshCandidate {
-    std::uint32_t bucket;
-    bool drawnIfDemoted;  // in view: drawn as an impostor if the cap demotes it
+    std::uint32_t character;
+    std::uint32_t viewLod;
 };
 
 }  // namespace
 
 VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::CharacterRecord> characters,
                        std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState,
-                       std::vector<std::uint32_t>* impostors, std::uint32_t* demoted) {
+                       std::vector<std::uint32_t>* impostors, std::uint32_t* demoted, ShadowLists* shadows) {
     VisibleLists lists(models.size() * LOD_COUNT);
+    ShadowLists ownShadows;
+    ShadowLists& shadow = shadows ? *shadows : ownShadows;
+    shadow.casters.assign(models.size() * LOD_COUNT, {});
+    shadow.impostors.clear();
+    shadow.states.assign(characters.size(), 0u);
     std::vector<MeshCandidate> candidates;
     std::vector<SizedCharacter> sizes;
-    // Impostors cast no shadow, so only those in view are kept.
-    auto drawnAsImpostor = [&](const glm::vec4& sphere) { return cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere); };
+    // As cull_lists.glsl.inc places them: in view at the view's level, a caster out of view at its
+    // shadow level; casters also in their shadow level's list; impostors drawn in view, casting a quad.
+    auto placeMesh = [&](std::uint32_t c, std::uint32_t viewLod) {
+        const std::uint32_t state = shadow.states[c];
+        const std::uint32_t model = characters[c].ids.x;
+        const std::uint32_t shadowLevel = state & SHADOW_LEVEL_MASK;
+        lists[model * LOD_COUNT + ((state & SHADOW_IN_VIEW_BIT) ? viewLod : shadowLevel)].push_back(c);
+        if (state & SHADOW_CASTS_BIT) shadow.casters[model * LOD_COUNT + shadowLevel].push_back(c);
+    };
+    auto placeImpostor = [&](std::uint32_t c) {
+        if (impostors && (shadow.states[c] & SHADOW_IN_VIEW_BIT)) impostors->push_back(c);
+        if (shadow.states[c] & SHADOW_CASTS_BIT) shadow.impostors.push_back(c);
+    };
     for (std::uint32_t c = 0; c < characters.size(); ++c) {
         const gpu::CharacterRecord& character = characters[c];
         const glm::vec4 sphere = worldSphere(character, models[character.ids.x]);
-        const bool visible = cull.flags.y == 0u ||
-                             (cull.limits.y != 0u ? casterInFrustum(cull.planes, sphere, glm::vec3(cull.light))
-                                                  : sphereInFrustum(cull.planes, sphere));
+        const bool inView = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
         const float size = projectedDiameter(sphere, cull.camera);
         std::uint32_t lod = 0;
         if (cull.flags.z != 0u) lod = chooseLod(size, lodState[c], cull.lod);
         lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
+        shadow.states[c] = shadowState(sphere, lod, inView, cull);
         if (lod == IMPOSTOR_LEVEL) {
-            if (impostors && drawnAsImpostor(sphere)) impostors->push_back(c);
+            placeImpostor(c);
             continue;
         }
-        if (!visible) continue;
-        candidates.push_back({character.ids.x * LOD_COUNT + lod, drawnAsImpostor(sphere)});
+        if (!inView && !(shadow.states[c] & SHADOW_CASTS_BIT)) continue;
+        candidates.push_back({c, lod});
         sizes.push_back({c, size});
     }
     // Over the cap, the smallest on screen are demoted (crowd/farthest_first.h).
@@ -96,10 +126,13 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
                                                        : std::vector<bool>(candidates.size(), true);
     if (demoted) *demoted = static_cast<std::uint32_t>(std::count(kept.begin(), kept.end(), false));
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (kept[i]) lists[candidates[i].bucket].push_back(sizes[i].character);
-        else if (impostors && candidates[i].drawnIfDemoted) impostors->push_back(sizes[i].character);
+        if (kept[i]) placeMesh(candidates[i].character, candidates[i].viewLod);
+        else placeImpostor(candidates[i].character);
     }
     if (impostors) std::sort(impostors->begin(), impostors->end());
+    std::sort(shadow.impostors.begin(), shadow.impostors.end());
+    for (std::vector<std::uint32_t>& list : lists) std::sort(list.begin(), list.end());
+    for (std::vector<std::uint32_t>& list : shadow.casters) std::sort(list.begin(), list.end());
     return lists;
 }
 

@@ -23,17 +23,30 @@ bool casterInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere, const g
 float projectedDiameter(const glm::vec4& sphere, const glm::vec4& camera);
 std::uint32_t lodForSize(float size, const glm::vec4& lod, float scale);
 std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod);
+// A character's shadow this frame (gpu_types.h, SHADOW_*): in view, casting, its level in the shadow map.
+std::uint32_t shadowState(const glm::vec4& sphere, std::uint32_t viewLod, bool inView, const gpu::CullUniforms& cull);
 
 // Visible characters per bucket (model x LOD_COUNT + lod), in character order.
 using VisibleLists = std::vector<std::vector<std::uint32_t>>;
 
+// What the shadow pass draws: mesh casters per bucket of their shadow level, impostor-level casters
+// (quads facing the light), both in character order, and every character's shadow state.
+struct ShadowLists {
+    VisibleLists casters;
+    std::vector<std::uint32_t> impostors;
+    std::vector<std::uint32_t> states;
+};
+
 // Culls and picks levels for every character as the GPU pass does. `lodState` holds each character's
-// last level + 1 (0: none yet) and is updated, as the GPU keeps it. With a mesh-level cap
+// last level + 1 (0: none yet) and is updated, as the GPU keeps it. A character in view is listed at
+// its level in view, a shadow caster out of view at its shadow level. With a mesh-level cap
 // (cull.limits.z), the characters beyond it are demoted smallest on screen first
 // (crowd/farthest_first.h); `demoted` counts them when given. Characters at the impostor level or
-// demoted that are in view go to `impostors` when given, in character order.
+// demoted that are in view go to `impostors` when given, in character order; the shadow pass's lists
+// go to `shadows` when given.
 VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::CharacterRecord> characters,
                        std::span<const gpu::ModelRecord> models, std::span<std::uint32_t> lodState,
-                       std::vector<std::uint32_t>* impostors = nullptr, std::uint32_t* demoted = nullptr);
+                       std::vector<std::uint32_t>* impostors = nullptr, std::uint32_t* demoted = nullptr,
+                       ShadowLists* shadows = nullptr);
 
 }  // namespace crowd

@@ -134,9 +134,10 @@ gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) con
     gpu::CullUniforms uniforms = render::makeCullUniforms(
         cull_, view.projection * view.view, camera.eye, camera.verticalFov, view.viewport.extent.height, crowd_.size(),
         lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
-    // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too.
-    uniforms.limits.y = shadows_ ? 1u : 0u;
-    uniforms.light = glm::vec4(render::lightDirection(), 0.0f);
+    // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too,
+    // those outside the shadow map's volume are not, and each caster's level comes from its size there.
+    const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(view), shape_, render::lightDirection());
+    render::setShadowUniforms(uniforms, cull_, shadows_, light, shadowMap_.size(), render::lightDirection());
     uniforms.limits.z = lists_.meshCapacity();
     return uniforms;
 }
@@ -159,6 +160,8 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
                  render::CharacterDraw::Target::ShadowMap);
+    // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
+    if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push);
     shadowMap_.endRendering(cmd);
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
@@ -250,7 +253,8 @@ std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
     // The mesh cut's lists and tie bits grow with the crowd; its histograms do not.
     const render::MeshCutSizes cut = render::meshCutSizes(crowd_.size(), lists_.meshCapacity());
     const double state = static_cast<double>(buffers_.characters().size + animationPass_.segmentBytes() +
-                                             lists_.lodState().size + lists_.impostorList().size +
+                                             lists_.lodState().size + lists_.shadowStates().size +
+                                             lists_.impostorList().size +
                                              lists_.characterDraws().size + cut.candidates + cut.boundary +
                                              cut.tieBits);
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);

@@ -119,21 +119,26 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
                            VkDescriptorSet sceneSet, const ScenePush& push, Target target) const {
     constexpr std::uint32_t stride = sizeof(gpu::DrawIndexedCommand);
     const VkDeviceSize zero = 0;
-    const VkPipeline pipeline = (target == Target::Colour ? colour_ : shadow_)[static_cast<int>(input)];
+    const bool colour = target == Target::Colour;
+    const VkPipeline pipeline = (colour ? colour_ : shadow_)[static_cast<int>(input)];
+    // The shadow pass's commands follow the colour pass's in each buffer (render/draw_lists.h).
     switch (input) {
         case DrawInput::SkinnedVertices: {
             bindCommon(cmd, pipeline, sceneSet, push);
             const VkBuffer buffers[2] = {vertices.buffer->buffer, vertices.buffer->buffer};
             const VkDeviceSize offsets[2] = {0, vertices.normalsOffset};
             vkCmdBindVertexBuffers(cmd, 0, 2, buffers, offsets);
-            vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, 0, lists_.totals().buffer,
-                                          offsetof(gpu::DrawTotals, drawCount), lists_.drawCapacity(), stride);
+            vkCmdDrawIndexedIndirectCount(
+                cmd, lists_.draws().buffer, colour ? 0 : VkDeviceSize{lists_.drawCapacity()} * stride,
+                lists_.totals().buffer, colour ? offsetof(gpu::DrawTotals, drawCount) : offsetof(gpu::DrawTotals, shadowDrawCount),
+                lists_.drawCapacity(), stride);
             break;
         }
         case DrawInput::BindPoseInstanced:
             bindCommon(cmd, pipeline, sceneSet, push);
             vkCmdBindVertexBuffers(cmd, 0, 1, &pool_.bindVertices().buffer, &zero);
-            vkCmdDrawIndexedIndirect(cmd, lists_.bucketDraws().buffer, 0, lists_.bucketCount(), stride);
+            vkCmdDrawIndexedIndirect(cmd, lists_.bucketDraws().buffer,
+                                     colour ? 0 : VkDeviceSize{lists_.bucketCount()} * stride, lists_.bucketCount(), stride);
             break;
         case DrawInput::BindPosePerCharacter: {
             bindCommon(cmd, pipeline, sceneSet, push);
@@ -142,10 +147,12 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
             // written each slot's command (instanceCount 0 when culled, its LOD's range otherwise).
             const VkDescriptorSet block = boneBlock_->set();
             const std::span<const std::uint32_t> offsets = crowd_.boneOffsets();
+            const std::uint32_t first = colour ? 0u : crowd_.characterCount();
             for (std::uint32_t c = 0; c < crowd_.characterCount(); ++c) {
                 const auto dynamicOffset = static_cast<std::uint32_t>(offsets[c] * sizeof(gpu::BoneRows));
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 2, 1, &block, 1, &dynamicOffset);
-                vkCmdDrawIndexedIndirect(cmd, lists_.characterDraws().buffer, static_cast<VkDeviceSize>(c) * stride, 1, stride);
+                vkCmdDrawIndexedIndirect(cmd, lists_.characterDraws().buffer,
+                                         static_cast<VkDeviceSize>(first + c) * stride, 1, stride);
             }
             break;
         }

@@ -47,11 +47,30 @@ gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4
     return u;
 }
 
+void setShadowUniforms(gpu::CullUniforms& u, const CullSettings& settings, bool shadows,
+                       const glm::mat4& lightViewProjection, std::uint32_t mapSize, const glm::vec3& towardsLight) {
+    u.limits.y = shadows ? 1u : 0u;
+    u.light = glm::vec4(towardsLight, 0.0f);
+    const std::array<glm::vec4, 6> planes = crowd::frustumPlanes(lightViewProjection);
+    std::copy(planes.begin(), planes.end(), u.lightPlanes);
+    // An orthographic projection: clip x = row 0 . (p, 1), so a world unit spans |row 0's xyz| of clip
+    // space's 2, times half the map's texels; the finer of x and y (a caster is never drawn coarser
+    // than either axis allows).
+    auto rowLength = [&](int i) {
+        return glm::length(glm::vec3(lightViewProjection[0][i], lightViewProjection[1][i], lightViewProjection[2][i]));
+    };
+    const float texelsPerUnit = 0.5f * static_cast<float>(mapSize) * std::max(rowLength(0), rowLength(1));
+    u.shadow = glm::vec4(texelsPerUnit, settings.shadowLodThresholds[0], settings.shadowLodThresholds[1],
+                         settings.shadowMinTexels);
+    u.shadowFlags.x = settings.shadowLod ? 1u : 0u;
+}
+
 namespace {
 
 struct EmitPush {
     std::uint32_t fixedLayout;
     std::uint32_t characterDraws;
+    std::uint32_t shadowDrawBase;
 };
 
 constexpr VkPipelineStageFlags2 kConsumers =
@@ -84,7 +103,8 @@ CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, 
             {storage, lists.skinDispatches().buffer},    {storage, lists.draws().buffer},
             {storage, lists.characterDraws().buffer},    {storage, lists.impostorFrame().buffer},
             {storage, lists.impostorList().buffer},      {storage, lists.meshCut().buffer},
-            {storage, lists.meshCandidates().buffer},    {storage, lists.meshBoundary().buffer}};
+            {storage, lists.meshCandidates().buffer},    {storage, lists.meshBoundary().buffer},
+            {storage, lists.shadowStates().buffer}};
         descriptors_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
         const VkDescriptorSetLayout setLayout = descriptors_->layout();
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(EmitPush)};
@@ -118,8 +138,10 @@ VkPipeline CullPass::createPipeline(std::span<const std::uint32_t> spirv) {
     return gpu::createComputePipeline(context_, spirv, layout_, {});
 }
 
-void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms, CullMode mode,
-                      bool fixedLayout, bool characterDraws) {
+void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& cullUniforms,
+                      CullMode mode, bool fixedLayout, bool characterDraws) {
+    gpu::CullUniforms uniforms = cullUniforms;
+    uniforms.shadowFlags.y = lists_.shadowListBase();  // where the shadow lists start (cull_lists.glsl.inc)
     const VkDeviceSize offset = uniformStride_ * frameSlot;
     std::memcpy(static_cast<std::byte*>(uniforms_.mapped) + offset, &uniforms, sizeof uniforms);
     // The previous frame's skinning, draws and readback must be done with the lists before they are rewritten.
@@ -135,7 +157,7 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     const VkDescriptorSet set = descriptors_->set();
     const auto dynamicOffset = static_cast<std::uint32_t>(offset);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 1, &dynamicOffset);
-    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u};
+    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity()};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     if (mode != CullMode::Cpu) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
@@ -183,35 +205,44 @@ void CullPass::recordCpuCulling(VkCommandBuffer cmd, std::uint32_t frameSlot, co
     cpuLodState_.resize(lists_.characterCount(), 0u);
     std::vector<std::uint32_t> impostorList;
     std::uint32_t demoted = 0;
-    const crowd::VisibleLists visible =
-        crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_, &impostorList, &demoted);
+    crowd::ShadowLists shadows;
+    const crowd::VisibleLists visible = crowd::cullOnCpu(uniforms, crowd_.records(), pool_.models(), cpuLodState_,
+                                                         &impostorList, &demoted, &shadows);
+    // The staging buffer: bucket counts, visible and shadow lists, impostor counts, impostor lists, shadow states.
     const gpu::Buffer& staging = lists_.cpuStaging(frameSlot);
-    auto* frames = static_cast<gpu::BucketFrame*>(staging.mapped);
-    auto* list = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(staging.mapped) + lists_.bucketFrames().size);
+    std::byte* base = static_cast<std::byte*>(staging.mapped);
+    const VkDeviceSize framesAt = 0, listsAt = lists_.bucketFrames().size, impostorAt = listsAt + lists_.visible().size,
+                       impostorListAt = impostorAt + sizeof(gpu::ImpostorFrame),
+                       statesAt = impostorListAt + lists_.impostorList().size;
+    auto* frames = reinterpret_cast<gpu::BucketFrame*>(base + framesAt);
+    auto* list = reinterpret_cast<std::uint32_t*>(base + listsAt);
     for (std::size_t b = 0; b < visible.size(); ++b) {
-        frames[b] = {static_cast<std::uint32_t>(visible[b].size()), 0u, 0u, 0u};
+        frames[b] = {static_cast<std::uint32_t>(visible[b].size()), 0u, 0u,
+                     static_cast<std::uint32_t>(shadows.casters[b].size())};
         std::copy(visible[b].begin(), visible[b].end(), list + lists_.buckets()[b].list.z);
+        std::copy(shadows.casters[b].begin(), shadows.casters[b].end(),
+                  list + lists_.shadowListBase() + lists_.buckets()[b].list.z);
     }
-    // The fill of the counts (just recorded) must land before the copy overwrites them.
-    gpu::memoryBarrier(cmd, kTransferWrite, kTransferWrite);
-    const VkBufferCopy countsRegion{0, 0, lists_.bucketFrames().size};
-    vkCmdCopyBuffer(cmd, staging.buffer, lists_.bucketFrames().buffer, 1, &countsRegion);
-    const VkBufferCopy listRegion{lists_.bucketFrames().size, 0, lists_.visible().size};
-    vkCmdCopyBuffer(cmd, staging.buffer, lists_.visible().buffer, 1, &listRegion);
-    // The impostor level: its count (finalize writes the draw from it) and its list.
-    const VkDeviceSize impostorBase = lists_.bucketFrames().size + lists_.visible().size;
     gpu::ImpostorFrame impostors{};
     impostors.count = static_cast<std::uint32_t>(impostorList.size());
     impostors.demoted = demoted;
-    std::byte* base = static_cast<std::byte*>(staging.mapped) + impostorBase;
-    std::memcpy(base, &impostors, sizeof impostors);
-    std::copy(impostorList.begin(), impostorList.end(), reinterpret_cast<std::uint32_t*>(base + sizeof impostors));
-    const VkBufferCopy impostorRegion{impostorBase, 0, sizeof impostors};
-    vkCmdCopyBuffer(cmd, staging.buffer, lists_.impostorFrame().buffer, 1, &impostorRegion);
-    if (!impostorList.empty()) {
-        const VkBufferCopy impostorListRegion{impostorBase + sizeof impostors, 0, impostorList.size() * 4};
-        vkCmdCopyBuffer(cmd, staging.buffer, lists_.impostorList().buffer, 1, &impostorListRegion);
-    }
+    impostors.shadowCount = static_cast<std::uint32_t>(shadows.impostors.size());
+    std::memcpy(base + impostorAt, &impostors, sizeof impostors);
+    auto* impostorEntries = reinterpret_cast<std::uint32_t*>(base + impostorListAt);
+    std::copy(impostorList.begin(), impostorList.end(), impostorEntries);
+    std::copy(shadows.impostors.begin(), shadows.impostors.end(), impostorEntries + lists_.characterCount());
+    std::copy(shadows.states.begin(), shadows.states.end(), reinterpret_cast<std::uint32_t*>(base + statesAt));
+
+    // The fill of the counts (just recorded) must land before the copy overwrites them.
+    gpu::memoryBarrier(cmd, kTransferWrite, kTransferWrite);
+    const VkBufferCopy regions[] = {{framesAt, 0, lists_.bucketFrames().size},
+                                    {listsAt, 0, lists_.visible().size},
+                                    {impostorAt, 0, sizeof impostors},
+                                    {impostorListAt, 0, lists_.impostorList().size},
+                                    {statesAt, 0, lists_.shadowStates().size}};
+    const VkBuffer targets[] = {lists_.bucketFrames().buffer, lists_.visible().buffer, lists_.impostorFrame().buffer,
+                                lists_.impostorList().buffer, lists_.shadowStates().buffer};
+    for (int i = 0; i < 5; ++i) vkCmdCopyBuffer(cmd, staging.buffer, targets[i], 1, &regions[i]);
 }
 
 }  // namespace render

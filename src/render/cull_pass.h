@@ -43,6 +43,13 @@ struct CullSettings {
     // impostor (render/impostor_atlas.h). Must be below lodThresholds[1].
     bool impostors = false;
     float impostorThreshold = 32.0f;
+    // Shadow LOD (with shadows on; docs/gpu-driven-frame.md, "Shadow LOD"): a caster is drawn into the
+    // shadow map at LOD 0 while its pose sphere's diameter covers at least shadowLodThresholds[0]
+    // texels of the map, at LOD 1 while at least shadowLodThresholds[1], else at LOD 2, and never finer
+    // than in view; under shadowMinTexels it is not drawn into the map. Off: casters at their view level.
+    bool shadowLod = true;
+    float shadowLodThresholds[2] = {150.0f, 50.0f};
+    float shadowMinTexels = 2.0f;
 };
 
 // The cull pass's uniforms for a camera: frustum planes from the view-projection, the eye, and the
@@ -50,6 +57,12 @@ struct CullSettings {
 gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4& viewProjection, const glm::vec3& eye,
                                    float verticalFov, std::uint32_t viewportHeight, std::uint32_t characters,
                                    std::uint32_t buckets, std::uint32_t maxGroups);
+
+// The shadow map's part of the uniforms: whether casters are kept (shadows on), the map's volume (the
+// light's orthographic view-projection) as planes, its texels per world unit (a map of `mapSize`
+// texels a side), the shadow LOD's thresholds and the light's direction.
+void setShadowUniforms(gpu::CullUniforms& uniforms, const CullSettings& settings, bool shadows,
+                       const glm::mat4& lightViewProjection, std::uint32_t mapSize, const glm::vec3& towardsLight);
 
 class CullPass {
 public:

@@ -56,13 +56,14 @@ std::vector<gpu::BucketRecord> planBuckets(const gpu::VulkanContext& context, co
 }  // namespace
 
 std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity) {
-    // Per character: the baseline's draw command, the LOD state and the impostor list entry; per
-    // mesh-level character (all, without a cap): visible-list entries (one per LOD) and a draw command;
-    // with a cap, the cut's histograms and per-character lists.
+    // Per character: the baseline's two draw commands (colour, shadow), the LOD state, the shadow state
+    // and two impostor list entries (in view, casting); per mesh-level character (all, without a cap):
+    // visible-list and shadow-list entries (one each per LOD) and two draw commands; with a cap, the
+    // cut's histograms and per-character lists.
     const std::uint64_t meshLevel = meshCapacity > 0 ? std::min<std::uint64_t>(characters, meshCapacity) : characters;
-    return characters * (sizeof(gpu::DrawIndexedCommand) + 4 + 4) +
-           meshLevel * (LOD_COUNT * 4 + sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
-           buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + sizeof(gpu::DrawIndexedCommand) + 16) +
+    return characters * (2 * sizeof(gpu::DrawIndexedCommand) + 4 + 4 + 2 * 4) +
+           meshLevel * 2 * (LOD_COUNT * 4 + sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
+           buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + 2 * sizeof(gpu::DrawIndexedCommand) + 16) +
            meshCutSizes(characters, meshCapacity).total();
 }
 
@@ -76,6 +77,7 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
     const VkDeviceSize n = std::max(characterCount_, 1u);
     VkDeviceSize listed = 0;
     for (const gpu::BucketRecord& bucket : buckets_) listed += bucket.list.w;
+    shadowListBase_ = static_cast<std::uint32_t>(listed);
     const VkDeviceSize b = buckets_.size();
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     constexpr VkBufferUsageFlags filled = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -87,17 +89,20 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
         bucketFrames_ = gpu::createBuffer(context, b * sizeof(gpu::BucketFrame),
                                           filled | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, device, "bucket counts");
         totals_ = gpu::createBuffer(context, sizeof(gpu::DrawTotals), indirect, device, "draw totals");
-        visible_ = gpu::createBuffer(context, std::max<VkDeviceSize>(listed, 1) * 4, filled, device, "visible lists");
-        draws_ = gpu::createBuffer(context, std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect, device,
-                                   "draw commands");
-        characterDraws_ = gpu::createBuffer(context, n * sizeof(gpu::DrawIndexedCommand), indirect | filled, device,
+        // Each of these holds the colour pass's entries, then the shadow pass's.
+        visible_ = gpu::createBuffer(context, std::max<VkDeviceSize>(2 * listed, 1) * 4, filled, device,
+                                     "visible and shadow lists");
+        draws_ = gpu::createBuffer(context, 2 * std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect,
+                                   device, "draw commands");
+        characterDraws_ = gpu::createBuffer(context, 2 * n * sizeof(gpu::DrawIndexedCommand), indirect | filled, device,
                                             "per-character draw commands");
-        bucketDraws_ = gpu::createBuffer(context, b * sizeof(gpu::DrawIndexedCommand), indirect, device,
+        bucketDraws_ = gpu::createBuffer(context, 2 * b * sizeof(gpu::DrawIndexedCommand), indirect, device,
                                          "per-bucket draw commands");
         skinDispatches_ = gpu::createBuffer(context, b * sizeof(glm::uvec4), indirect, device, "skinning dispatches");
         lodState_ = gpu::createBuffer(context, n * 4, filled, device, "LOD state");
         impostorFrame_ = gpu::createBuffer(context, sizeof(gpu::ImpostorFrame), indirect | filled, device, "impostor draw");
-        impostorList_ = gpu::createBuffer(context, n * 4, filled, device, "impostor list");
+        impostorList_ = gpu::createBuffer(context, 2 * n * 4, filled, device, "impostor lists (in view, casting)");
+        shadowStates_ = gpu::createBuffer(context, n * 4, filled, device, "shadow states");
         const MeshCutSizes cut = meshCutSizes(characterCount_, meshCapacity_);
         meshCut_ = gpu::createBuffer(context, cut.cutBuffer(), filled | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, device,
                                      "mesh cut and size histograms");
@@ -126,17 +131,18 @@ DrawLists::~DrawLists() { release(); }
 void DrawLists::release() {
     for (gpu::Buffer& buffer : cpuStaging_) gpu::destroyBuffer(context_, buffer);
     for (gpu::Buffer& buffer : readback_) gpu::destroyBuffer(context_, buffer);
-    for (gpu::Buffer* buffer : {&meshBoundary_, &meshCandidates_, &meshCut_, &impostorList_, &impostorFrame_, &lodState_,
-                                &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_, &totals_,
-                                &bucketFrames_, &bucketRecords_})
+    for (gpu::Buffer* buffer : {&shadowStates_, &meshBoundary_, &meshCandidates_, &meshCut_, &impostorList_,
+                                &impostorFrame_, &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_,
+                                &visible_, &totals_, &bucketFrames_, &bucketRecords_})
         gpu::destroyBuffer(context_, *buffer);
 }
 
 const gpu::Buffer& DrawLists::cpuStaging(std::uint32_t frameSlot) {
-    // Made on first use: only the CPU path needs it (bucket counts, then the lists).
+    // Made on first use: only the CPU path needs it (bucket counts, then the lists, then the shadow states).
     gpu::Buffer& staging = cpuStaging_[frameSlot];
     if (!staging.buffer)
-        staging = gpu::createBuffer(context_, bucketFrames_.size + visible_.size + impostorFrame_.size + impostorList_.size,
+        staging = gpu::createBuffer(context_, bucketFrames_.size + visible_.size + impostorFrame_.size + impostorList_.size +
+                                                  shadowStates_.size,
                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                     gpu::MemoryUse::HostUpload, "visible lists (CPU culling upload)");
     return staging;
@@ -150,17 +156,20 @@ LodCounts DrawLists::countsOf(std::uint32_t frameSlot) const {
         counts.characters[lod] += frames[b].count;
         counts.triangles[lod] += static_cast<std::uint64_t>(frames[b].count) * (buckets_[b].mesh.y / 3);
         counts.skinnedVertices += static_cast<std::uint64_t>(frames[b].count) * buckets_[b].mesh.z;
+        counts.shadowCharacters[lod] += frames[b].shadowCount;
+        counts.shadowTriangles[lod] += static_cast<std::uint64_t>(frames[b].shadowCount) * (buckets_[b].mesh.y / 3);
     }
     gpu::ImpostorFrame impostors;
     std::memcpy(&impostors, frames + buckets_.size(), sizeof impostors);
     counts.impostors = impostors.count;
     counts.demoted = impostors.demoted;
+    counts.shadowImpostors = impostors.shadowCount;
     return counts;
 }
 
 VkDeviceSize DrawLists::bytes() const {
     VkDeviceSize total = 0;
-    for (const gpu::Buffer* buffer : {&meshBoundary_, &meshCandidates_, &meshCut_, &impostorList_, &impostorFrame_,
+    for (const gpu::Buffer* buffer : {&shadowStates_, &meshBoundary_, &meshCandidates_, &meshCut_, &impostorList_, &impostorFrame_,
                                       &lodState_, &skinDispatches_, &bucketDraws_, &characterDraws_, &draws_, &visible_,
                                       &totals_, &bucketFrames_, &bucketRecords_})
         total += buffer->size;

@@ -6,7 +6,9 @@
 //
 // Skinned vertices are dense: visible character k of bucket b has its vertices at
 // frame[b].vertexBase + k x (vertices of b's LOD), so skinning work and memory traffic follow what
-// is visible. The buffers that hold them are sized for the worst case (every character visible at
+// is visible. The shadow pass has the same three kinds of command as the colour pass, after the colour
+// ones in the same buffers: compacted draws of the casters (each its shadow level's indices over its
+// skinned vertices), per-character draws and per-bucket instanced draws over each bucket's casters. The buffers that hold them are sized for the worst case (every character visible at
 // LOD 0), since the CPU never learns this frame's counts.
 #include <cstdint>
 #include <span>
@@ -36,8 +38,14 @@ struct LodCounts {
     std::uint64_t skinnedVertices = 0;  // what a skinning pass skins: visible characters x their LOD's vertices
     std::uint32_t impostors = 0;  // characters drawn at the impostor level
     std::uint32_t demoted = 0;    // of those, sent there because the mesh levels were full (the cap)
+    // The shadow pass: mesh casters and their triangles per shadow level, impostors casting a quad.
+    std::uint32_t shadowCharacters[LOD_COUNT] = {};
+    std::uint64_t shadowTriangles[LOD_COUNT] = {};
+    std::uint32_t shadowImpostors = 0;
     std::uint32_t visible() const { return characters[0] + characters[1] + characters[2]; }
     std::uint64_t totalTriangles() const { return triangles[0] + triangles[1] + triangles[2]; }
+    std::uint32_t shadowCasters() const { return shadowCharacters[0] + shadowCharacters[1] + shadowCharacters[2]; }
+    std::uint64_t totalShadowTriangles() const { return shadowTriangles[0] + shadowTriangles[1] + shadowTriangles[2]; }
 };
 
 class DrawLists {
@@ -65,13 +73,21 @@ public:
     const gpu::Buffer& bucketRecords() const { return bucketRecords_; }
     const gpu::Buffer& bucketFrames() const { return bucketFrames_; }
     const gpu::Buffer& totals() const { return totals_; }
+    // Every bucket's visible list, then from shadowListBase() every bucket's list of shadow casters.
     const gpu::Buffer& visible() const { return visible_; }
+    std::uint32_t shadowListBase() const { return shadowListBase_; }
+    // The compacted draws: the colour pass's, then from drawCapacity() the shadow pass's.
     const gpu::Buffer& draws() const { return draws_; }
+    // One per character slot: the colour pass's, then from characterCount() the shadow pass's.
     const gpu::Buffer& characterDraws() const { return characterDraws_; }
+    // One per bucket: the colour pass's, then from bucketCount() the shadow pass's.
     const gpu::Buffer& bucketDraws() const { return bucketDraws_; }
+    // Per character: its shadow this frame (gpu_types.h, SHADOW_*), written by culling.
+    const gpu::Buffer& shadowStates() const { return shadowStates_; }
     const gpu::Buffer& skinDispatches() const { return skinDispatches_; }
     const gpu::Buffer& lodState() const { return lodState_; }
-    // The impostor level: its count and draw command (gpu::ImpostorFrame), and its list of characters.
+    // The impostor level: its counts (gpu::ImpostorFrame), and its list of characters in view, then
+    // from characterCount() its list of characters that cast a shadow.
     const gpu::Buffer& impostorFrame() const { return impostorFrame_; }
     const gpu::Buffer& impostorList() const { return impostorList_; }
     // The mesh-level cap's cut (render/mesh_cut.h): the cut with its histograms and tie bits, the
@@ -99,8 +115,10 @@ private:
     std::uint32_t characterCount_;
     std::uint32_t meshCapacity_, drawCapacity_;
     std::uint64_t skinnedCapacity_, fixedCapacity_;  // set by planBuckets, before this line runs
+    std::uint32_t shadowListBase_ = 0;
     gpu::Buffer bucketRecords_, bucketFrames_, totals_, visible_, draws_, characterDraws_, bucketDraws_,
-        skinDispatches_, lodState_, impostorFrame_, impostorList_, meshCut_, meshCandidates_, meshBoundary_;
+        skinDispatches_, lodState_, impostorFrame_, impostorList_, meshCut_, meshCandidates_, meshBoundary_,
+        shadowStates_;
     std::vector<gpu::Buffer> readback_;
     std::vector<gpu::Buffer> cpuStaging_;
 };

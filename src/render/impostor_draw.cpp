@@ -12,12 +12,19 @@
 #include "impostor.frag.spv.h"
 #include "impostor.vert.spv.h"
 #include "impostor_draws.comp.spv.h"
+#include "impostor_shadow.frag.spv.h"
+#include "render/shadow_map.h"
 
 namespace render {
 
 namespace {
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-}
+
+struct DrawsPush {
+    std::uint32_t maxDraws;
+    std::uint32_t characters;
+};
+}  // namespace
 
 ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                            const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
@@ -33,16 +40,17 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         }
         quad_ = gpu::createBufferWithData(context, std::as_bytes(std::span(indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                                           "impostor quad indices");
-        maxDraws_ = static_cast<std::uint32_t>((lists.impostorList().size / 4 + IMPOSTOR_QUADS_PER_DRAW - 1) /
-                                               IMPOSTOR_QUADS_PER_DRAW);
-        maxDraws_ = std::max(maxDraws_, 1u);
-        draws_ = gpu::createBuffer(context, sizeof(gpu::ImpostorDrawsHeader) + maxDraws_ * sizeof(gpu::DrawIndexedCommand),
+        characters_ = lists.characterCount();
+        maxDraws_ = std::max((characters_ + IMPOSTOR_QUADS_PER_DRAW - 1) / IMPOSTOR_QUADS_PER_DRAW, 1u);
+        draws_ = gpu::createBuffer(context,
+                                   sizeof(gpu::ImpostorDrawsHeader) + 2 * maxDraws_ * sizeof(gpu::DrawIndexedCommand),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                    gpu::MemoryUse::DeviceLocal, "impostor draws");
         const gpu::BufferBinding drawBindings[] = {{storage, lists.impostorFrame().buffer}, {storage, draws_.buffer}};
         drawsSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, drawBindings);
         const VkDescriptorSetLayout drawsSetLayout = drawsSet_->layout();
-        drawsLayout_ = gpu::createPipelineLayout(context, {&drawsSetLayout, 1}, {});
+        const VkPushConstantRange drawsPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(DrawsPush)};
+        drawsLayout_ = gpu::createPipelineLayout(context, {&drawsSetLayout, 1}, {&drawsPush, 1});
         drawsPipeline_ = gpu::createComputePipeline(context, impostor_draws_comp_spv, drawsLayout_, {});
         const gpu::BufferBinding bindings[] = {{storage, pool.modelTable().buffer},
                                                {storage, atlas.modelTable().buffer},
@@ -61,6 +69,16 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         desc.layout = layout_;
         desc.cullMode = VK_CULL_MODE_NONE;  // a quad facing the eye: its winding is not worth deriving
         pipeline_ = gpu::createGraphicsPipeline(context, desc);
+        // The shadow map's: depth only, the quad facing the light, biased as the meshes' shadows are.
+        gpu::GraphicsPipelineDesc shadow = desc;
+        shadow.fragmentShader = impostor_shadow_frag_spv;
+        shadow.colorFormats = {};
+        shadow.depthFormat = kShadowFormat;
+        shadow.samples = VK_SAMPLE_COUNT_1_BIT;
+        shadow.depthBiasConstant = 1.0f;
+        shadow.depthBiasSlope = 1.5f;
+        shadow.vertexConstants = {1u};  // SHADOW_PASS
+        shadowPipeline_ = gpu::createGraphicsPipeline(context, shadow);
     } catch (...) {
         release();
         throw;
@@ -70,6 +88,8 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
 ImpostorDraw::~ImpostorDraw() { release(); }
 
 void ImpostorDraw::release() {
+    if (shadowPipeline_) vkDestroyPipeline(context_.device, shadowPipeline_, nullptr);
+    shadowPipeline_ = VK_NULL_HANDLE;
     if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     pipeline_ = VK_NULL_HANDLE, layout_ = VK_NULL_HANDLE;
@@ -90,9 +110,23 @@ void ImpostorDraw::recordDraws(VkCommandBuffer cmd) const {
     const VkDescriptorSet set = drawsSet_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, drawsLayout_, 0, 1, &set, 0, nullptr);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, drawsPipeline_);
+    const DrawsPush push{maxDraws_, characters_};
+    vkCmdPushConstants(cmd, drawsLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, 1, 1, 1);
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
+}
+
+void ImpostorDraw::recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, const ScenePush& push) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadowPipeline_);
+    const VkDescriptorSet sets[3] = {lightSet, set_->set(), atlas_.set()};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 3, sets, 0, nullptr);
+    vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
+    vkCmdBindIndexBuffer(cmd, quad_.buffer, 0, VK_INDEX_TYPE_UINT32);
+    constexpr VkDeviceSize stride = sizeof(gpu::DrawIndexedCommand);
+    vkCmdDrawIndexedIndirectCount(cmd, draws_.buffer, sizeof(gpu::ImpostorDrawsHeader) + maxDraws_ * stride,
+                                  draws_.buffer, offsetof(gpu::ImpostorDrawsHeader, shadowDrawCount), maxDraws_,
+                                  static_cast<std::uint32_t>(stride));
 }
 
 void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const {

@@ -2,7 +2,9 @@
 // The impostor level's draw: indexed quads (four vertices each) for the characters of the frame's
 // impostor list, in one draw per IMPOSTOR_QUADS_PER_DRAW of them whose count culling decides, textured
 // from the atlas and lit like the meshes, inside the colour pass after the mesh draws. It reads records
-// only: no bones, no skinned vertices.
+// only: no bones, no skinned vertices. With shadows, the characters of the frame's casting impostor list
+// are drawn into the shadow map as the same quads facing the light (docs/gpu-driven-frame.md, "Impostor
+// shadows").
 #include <memory>
 
 #include <vulkan/vulkan.h>
@@ -34,6 +36,8 @@ public:
     void recordDraws(VkCommandBuffer cmd) const;
     // Inside the colour pass (its viewport set), with the camera's scene set.
     void record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const;
+    // Inside the shadow map's pass, with the light's scene set: the casting impostors' quads.
+    void recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, const ScenePush& push) const;
     // The fixed index buffer and the draw commands.
     std::uint64_t bytes() const { return quad_.size + draws_.size; }
 
@@ -44,13 +48,15 @@ private:
     const DrawLists& lists_;
     const ImpostorAtlas& atlas_;
     gpu::Buffer quad_;   // indices of IMPOSTOR_QUADS_PER_DRAW quads
-    gpu::Buffer draws_;  // ImpostorDrawsHeader, then up to maxDraws_ indexed draws
+    gpu::Buffer draws_;  // ImpostorDrawsHeader, then up to maxDraws_ indexed draws for each pass
     std::uint32_t maxDraws_ = 1;
+    std::uint32_t characters_ = 0;
     std::unique_ptr<gpu::DescriptorBundle> set_, drawsSet_;
     VkPipelineLayout drawsLayout_ = VK_NULL_HANDLE;
     VkPipeline drawsPipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipeline shadowPipeline_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render

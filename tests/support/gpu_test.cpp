@@ -76,6 +76,7 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.meshCapacity = options.meshCapacity;
     settings.framesInFlight = options.framesInFlight;
     settings.shadows = options.shadows;
+    settings.shadowLod = options.cull.shadowLod;
     settings.shadowMapSize = options.shadowMapSize;
     return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
 }
@@ -98,6 +99,7 @@ void TestRenderer::setCull(const render::CullSettings& cull) {
                                                               : crowdgpu::Culling::Gpu;
     setCulling(culling, cull.lod, cull.impostors);
     setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
+    library().setShadowLod(cull.shadowLod);
 }
 
 gpu::CullUniforms TestRenderer::cullUniforms() const {
@@ -211,6 +213,34 @@ std::vector<std::uint32_t> readImpostorList(const gpu::VulkanContext& context, c
     std::memcpy(list.data(), listBytes.data(), frame.count * 4);
     std::sort(list.begin(), list.end());
     return list;
+}
+
+crowd::ShadowLists readShadowLists(const gpu::VulkanContext& context, const TestRenderer& renderer) {
+    const render::DrawLists& lists = renderer.drawLists();
+    const std::vector<std::byte> frames = readBuffer(context, lists.bucketFrames());
+    const std::vector<std::byte> visible = readBuffer(context, lists.visible());
+    crowd::ShadowLists result;
+    result.casters.resize(lists.bucketCount());
+    for (std::uint32_t b = 0; b < lists.bucketCount(); ++b) {
+        gpu::BucketFrame frame;
+        std::memcpy(&frame, frames.data() + b * sizeof frame, sizeof frame);
+        const std::byte* first = visible.data() + (lists.shadowListBase() + lists.buckets()[b].list.z) * 4;
+        result.casters[b].resize(frame.shadowCount);
+        std::memcpy(result.casters[b].data(), first, frame.shadowCount * 4);
+        std::sort(result.casters[b].begin(), result.casters[b].end());
+    }
+    const std::vector<std::byte> frameBytes = readBuffer(context, lists.impostorFrame());
+    const std::vector<std::byte> listBytes = readBuffer(context, lists.impostorList());
+    gpu::ImpostorFrame impostors;
+    std::memcpy(&impostors, frameBytes.data(), sizeof impostors);
+    result.impostors.resize(impostors.shadowCount);
+    std::memcpy(result.impostors.data(), listBytes.data() + std::size_t{lists.characterCount()} * 4,
+                impostors.shadowCount * 4);
+    std::sort(result.impostors.begin(), result.impostors.end());
+    const std::vector<std::byte> states = readBuffer(context, lists.shadowStates());
+    result.states.resize(lists.characterCount());
+    std::memcpy(result.states.data(), states.data(), result.states.size() * 4);
+    return result;
 }
 
 std::vector<gpu::CharacterRecord> readCharacterRecords(const gpu::VulkanContext& context,

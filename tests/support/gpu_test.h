@@ -102,6 +102,9 @@ std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::
 crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const TestRenderer& renderer);
 // The last frame's impostor list (impostor-level and demoted characters in view), sorted.
 std::vector<std::uint32_t> readImpostorList(const gpu::VulkanContext& context, const TestRenderer& renderer);
+// The last frame's shadow lists (mesh casters per bucket of their shadow level, casting impostors), sorted,
+// and every character's shadow state (gpu_types.h, SHADOW_*).
+crowd::ShadowLists readShadowLists(const gpu::VulkanContext& context, const TestRenderer& renderer);
 // The character records the GPU culled from in the last frame (the motion pass writes them).
 std::vector<gpu::CharacterRecord> readCharacterRecords(const gpu::VulkanContext& context,
                                                        const TestRenderer& renderer);

@@ -150,6 +150,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.impostorThreshold = cull.impostorThreshold;
     settings.meshCapacity = meshCapacity;
     settings.shadows = shadows;
+    settings.shadowLod = cull.shadowLod;
     return settings;
 }
 

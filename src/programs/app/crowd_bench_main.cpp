@@ -40,6 +40,7 @@ usage: crowd-bench [options]
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
+  --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
   --impostors on|off   the impostor level for far characters (default off); with

@@ -38,6 +38,9 @@ usage: crowd-render [options]
                           smallest on screen are drawn as impostors; sizes the skinned-vertex buffers
                           (default 65536)
   --shadows on|off        the sun's shadow map, drawn from the same skinned vertices (default on)
+  --shadow-lod on|off     casters drawn into the shadow map at a level of detail from their size in it
+                          (texels, the --lod-thresholds values), never finer than in view, and not at
+                          all under 2 texels; off: at their level in view (default on)
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)
@@ -178,6 +181,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--lod") options.cull.lod = parseOnOff(flag, next());
         else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
         else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
+        else if (flag == "--shadow-lod") options.cull.shadowLod = parseOnOff(flag, next());
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
             options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);

@@ -28,6 +28,7 @@ struct CullOptions {
     float hysteresis = 0.1f;
     bool impostors = false;
     float impostorThreshold = 32.0f;
+    bool shadowLod = true;  // casters' level in the shadow map from their size there (crowdgpu::RendererSettings)
 };
 
 // What a crowd is: models, size, clip, seed.

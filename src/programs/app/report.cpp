@@ -27,7 +27,8 @@ RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t wa
     // Never leave every frame out: a short run still reports its last frames.
     const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
     std::vector<double> intervals, plan, animate, record, total, triangles, skinned, impostors, demoted;
-    std::vector<double> visible[app::kLodCount];
+    std::vector<double> shadowTriangles, shadowImpostors;
+    std::vector<double> visible[app::kLodCount], casters[app::kLodCount];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
         const app::FrameStats& frame = stats[i];
@@ -43,7 +44,14 @@ RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t wa
         skinned.push_back(static_cast<double>(frame.lods.skinnedVertices));
         impostors.push_back(frame.lods.impostors);
         demoted.push_back(frame.lods.demoted);
+        for (int l = 0; l < app::kLodCount; ++l) casters[l].push_back(frame.lods.shadowCharacters[l]);
+        shadowTriangles.push_back(static_cast<double>(frame.lods.shadowTriangles[0] + frame.lods.shadowTriangles[1] +
+                                                      frame.lods.shadowTriangles[2]));
+        shadowImpostors.push_back(frame.lods.shadowImpostors);
     }
+    for (int l = 0; l < app::kLodCount; ++l) summary.medianShadowCasters[l] = median(casters[l]);
+    summary.medianShadowTriangles = median(shadowTriangles);
+    summary.medianShadowImpostors = median(shadowImpostors);
     summary.medianImpostors = median(impostors);
     summary.medianDemoted = median(demoted);
     for (int l = 0; l < app::kLodCount; ++l) summary.medianVisible[l] = median(visible[l]);
@@ -101,6 +109,9 @@ void printSummary(const RunSummary& s) {
                 "%.2f M triangles  [culling %s]\n",
                 s.medianVisible[0], s.medianVisible[1], s.medianVisible[2], s.medianImpostors, s.medianDemoted,
                 s.medianTriangles / 1e6, s.culling.c_str());
+    std::printf("  shadow: %.0f / %.0f / %.0f casters at LOD 0 / 1 / 2, %.0f impostors, %.2f M triangles\n",
+                s.medianShadowCasters[0], s.medianShadowCasters[1], s.medianShadowCasters[2], s.medianShadowImpostors,
+                s.medianShadowTriangles / 1e6);
     if (s.atlasBakeMs > 0.0) std::printf("  impostor atlas baked in %.0f ms\n", s.atlasBakeMs);
     if (!s.memoryPerCharacter.empty()) {
         std::printf("  device bytes per character:");
@@ -126,6 +137,9 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["median_triangles"] = s.medianTriangles;
     json["median_impostors"] = s.medianImpostors;
     json["median_demoted_to_impostors"] = s.medianDemoted;
+    json["median_shadow_casters_per_lod"] = {s.medianShadowCasters[0], s.medianShadowCasters[1], s.medianShadowCasters[2]};
+    json["median_shadow_triangles"] = s.medianShadowTriangles;
+    json["median_shadow_impostors"] = s.medianShadowImpostors;
     json["memory_bytes_per_character"] = s.memoryPerCharacter;
     if (s.atlasBakeMs > 0.0) json["impostor_atlas_bake_ms"] = s.atlasBakeMs;
     json["method"] = s.method;

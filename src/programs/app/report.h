@@ -25,6 +25,10 @@ struct RunSummary {
     double medianSkinnedVertices = 0.0;  // visible characters x their LOD's vertices
     double medianImpostors = 0.0;        // characters drawn at the impostor level
     double medianDemoted = 0.0;          // of those, over the mesh-level cap
+    // The shadow pass: mesh casters per shadow level, their triangles, impostors casting a quad.
+    double medianShadowCasters[app::kLodCount] = {};
+    double medianShadowTriangles = 0.0;
+    double medianShadowImpostors = 0.0;
     std::uint32_t frames = 0;
     std::uint32_t measuredFrames = 0;
     double medianFrameMs = 0.0;   // see frameClock

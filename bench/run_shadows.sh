@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# What shadows cost, on a lent GPU machine: crowd-bench on paper-fig4 (10,240 soldiers flown over) and
+# stress (100,000 soldiers from 20 s, inside the crowd) at 1920x1080, methods compute and two-pass, with
+# shadows off, on with shadow LOD (the default) and on without it (--shadow-lod off: casters at their level
+# in view), twice, interleaved so drift shows; crowd-render's picture of each (the same frame: the last of
+# FRAMES). Prints the medians, the shadow pass's share and triangles, and writes $OUT/shadows.tgz (every
+# run's output, the CSVs, the pictures).
+#
+# Expects the Vulkan loader packages in .gl/ and crowd-bench and crowd-render in .devbin/ (carried).
+#   on the H100:      bash bench/run_shadows.sh
+#   here on lavapipe: DEVICE= FRAMES=3 WARMUP=1 SIZE=480x270 STRESS_COUNT=8000 bash bench/run_shadows.sh
+# FRAMES (default 300) and WARMUP (30) as crowd-bench's --frames and --warmup; DEVICE (NVIDIA): part of
+# the device's name, empty for the first device; SIZE (1920x1080); STRESS_COUNT (100000; lavapipe's
+# 128 MiB storage-buffer range takes 8000 with compute).
+set -uo pipefail
+frames=${FRAMES:-300}
+warmup=${WARMUP:-30}
+device=${DEVICE-NVIDIA}
+size=${SIZE:-1920x1080}
+stress_count=${STRESS_COUNT:-100000}
+bin=$PWD/.devbin
+res=/tmp/shadows
+out=${OUT:-/tmp/out}
+rm -rf "$res"
+mkdir -p "$res/pictures" "$out"
+if [[ -d .gl ]]; then
+  for f in .gl/*.deb; do dpkg -x "$f" /; done
+  ldconfig
+fi
+export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+device_flag=()
+[[ -n $device ]] && device_flag=(--device "$device")
+
+# The programs find the device by name, or the NVIDIA driver is not among the loader's: name its ICD.
+probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
+if ! probe && [[ -n $device ]]; then
+  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+  probe || { cat "$res/probe.txt"; echo "run_shadows: no device named like '$device'"; exit 1; }
+fi
+nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem --format=csv >"$res/nvidia-smi.txt" 2>&1
+cat "$res/nvidia-smi.txt"
+
+failures=0
+# run NAME PROGRAM ARGS...: its output in $res/NAME.txt, its command in commands.txt.
+run() {
+  local name=$1; shift
+  echo "$*" >>"$res/commands.txt"
+  echo "== $name"
+  "$@" >"$res/$name.txt" 2>&1
+  local status=$?
+  if [[ $status != 0 ]]; then
+    failures=$((failures + 1))
+    echo "   failed (exit $status):"; tail -3 "$res/$name.txt"
+  fi
+}
+
+# The value of column $2 in the first data row of the CSV file $1 (quoted fields may hold commas).
+csv_value() {
+  awk -v want="$2" '
+    function fields(line, out,   n, i, c, field, quoted) {
+      n = 0; field = ""; quoted = 0
+      for (i = 1; i <= length(line); i++) {
+        c = substr(line, i, 1)
+        if (c == "\"") quoted = !quoted
+        else if (c == "," && !quoted) { out[++n] = field; field = "" }
+        else field = field c
+      }
+      out[++n] = field
+      return n
+    }
+    NR == 1 { n = fields($0, head); for (i = 1; i <= n; i++) if (head[i] == want) column = i; next }
+    NR == 2 { fields($0, row); if (column) print row[column]; exit }' "$1" 2>/dev/null
+}
+# Percent by which $2 is over $1.
+percent() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b != "") printf "%+.0f%%", 100 * (b - a) / a; else print "-" }'; }
+
+scene_flags() {  # bench|render scene
+  case $2 in
+    paper-fig4) ;;
+    stress) local count=--count
+            [[ $1 == bench ]] && count=--counts  # crowd-bench measures lists
+            echo "$count $stress_count --start 20" ;;
+  esac
+}
+# The three shadow settings: off, on (shadow LOD, the default), on without shadow LOD.
+shadow_flags() {
+  case $1 in
+    off) echo "--shadows off" ;;
+    lod) echo "--shadows on --shadow-lod on" ;;
+    view-lod) echo "--shadows on --shadow-lod off" ;;
+  esac
+}
+
+for round in 1 2; do
+  for scene in paper-fig4 stress; do
+    for method in compute two-pass; do
+      for shadows in off lod view-lod; do
+        key=$scene-$method-$shadows-$round
+        # shellcheck disable=SC2046  # the flag functions give words
+        run "bench-$key" "$bin/crowd-bench" "${device_flag[@]}" --scene $scene $(scene_flags bench $scene) \
+          $(shadow_flags $shadows) --methods $method --frames "$frames" --warmup "$warmup" --size "$size" \
+          --csv "$res/bench-$key.csv"
+        if [[ $round == 1 ]]; then
+          # shellcheck disable=SC2046
+          run "render-$scene-$method-$shadows" "$bin/crowd-render" "${device_flag[@]}" --scene $scene \
+            $(scene_flags render $scene) $(shadow_flags $shadows) --method $method --frames "$frames" --size "$size" \
+            --out "$res/pictures/$scene-$method-$shadows.png"
+        fi
+      done
+    done
+  done
+done
+
+{
+  echo
+  echo "Medians over $frames frames after $warmup warm-up at $size, in ms; frame: wall clock between frame starts"
+  echo "(two frames in flight); shadow, draw: the passes' GPU time ($(csv_value "$res/bench-paper-fig4-compute-off-1.csv" pass_clock))."
+  echo "lod: shadows on with shadow LOD (the default); view-lod: --shadow-lod off (casters at their level in view)."
+  echo "vs off: the frame over shadows off's. shadow tris: triangles drawn into the shadow map, M; skinned tris: the"
+  echo "characters skinned this frame (in view, and casters out of view at their shadow level), M."
+  printf "%-10s %-8s %-8s %1s | %8s %7s | %8s %8s | %11s %10s\n" scene method shadows r frame "vs off" shadow draw \
+    "shadow tris" "skinned tris"
+  for round in 1 2; do
+    for scene in paper-fig4 stress; do
+      for method in compute two-pass; do
+        off_frame=$(csv_value "$res/bench-$scene-$method-off-$round.csv" median_frame_ms)
+        for shadows in off lod view-lod; do
+          csv=$res/bench-$scene-$method-$shadows-$round.csv
+          if [[ $(csv_value "$csv" status) != ok ]]; then
+            printf "%-10s %-8s %-8s %1s | %8s\n" "$scene" "$method" "$shadows" "$round" skipped
+            continue
+          fi
+          frame=$(csv_value "$csv" median_frame_ms)
+          printf "%-10s %-8s %-8s %1s | %8.3f %7s | %8.3f %8.3f | %11.2f %10.2f\n" "$scene" "$method" "$shadows" "$round" \
+            "$frame" "$(percent "$off_frame" "$frame")" "$(csv_value "$csv" gpu_shadow_ms)" \
+            "$(csv_value "$csv" gpu_draw_ms)" "$(awk -v t="$(csv_value "$csv" shadow_triangles)" 'BEGIN { print t / 1e6 }')" \
+            "$(awk -v t="$(csv_value "$csv" triangles_drawn)" 'BEGIN { print t / 1e6 }')"
+        done
+      done
+    done
+  done
+} | tee "$res/summary.txt"
+tar -czf "$out/shadows.tgz" -C /tmp shadows
+[[ $failures == 0 ]] || { echo "run_shadows: $failures run(s) failed (see their .txt in shadows.tgz)"; exit 1; }
