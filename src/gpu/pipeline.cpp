@@ -53,8 +53,9 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     VkShaderModule vertex = createShaderModule(context, desc.vertexShader);
     VkShaderModule fragment = createShaderModule(context, desc.fragmentShader);
 
-    std::vector<VkSpecializationMapEntry> entries;
+    std::vector<VkSpecializationMapEntry> entries, fragmentEntries;
     const VkSpecializationInfo specialization = specializationFor(desc.vertexConstants, entries);
+    const VkSpecializationInfo fragmentSpecialization = specializationFor(desc.fragmentConstants, fragmentEntries);
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                  {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -64,6 +65,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = fragment;
     stages[1].pName = "main";
+    stages[1].pSpecializationInfo = fragmentEntries.empty() ? nullptr : &fragmentSpecialization;
 
     VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertexInput.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.bindings.size());

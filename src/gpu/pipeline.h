@@ -33,6 +33,8 @@ struct GraphicsPipelineDesc {
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     // Specialization constants of the vertex stage, ids 0, 1, ... in order.
     std::vector<std::uint32_t> vertexConstants;
+    // And of the fragment stage.
+    std::vector<std::uint32_t> fragmentConstants;
 };
 
 // Viewport and scissor are dynamic; rendering uses dynamic rendering with the given formats.
