@@ -3,7 +3,10 @@
 # paper-fig5 at 1280x720 (and, as in the issue's table, stress 1,000,000 from above with impostors at
 # 1920x1080), each with --aa off, msaa2, msaa4 and msaa8, against a 4x4 supersampled render of the
 # same frame (crowd-render at 4x the width and height, box-filtered down in linear light by
-# image-downsample), compared by image-psnr. Cost: crowd-bench on paper-fig4 and stress 100,000
+# image-downsample), compared by image-psnr; and against a second reference that also scales the
+# pixel thresholds of the levels of detail and impostors by 4 (--lod-thresholds 600,200
+# --impostor-threshold 128), so that it draws each character at the level the 1x frame does: the
+# first reference's finer levels differ from the 1x frame by more than its edges do. Cost: crowd-bench on paper-fig4 and stress 100,000
 # inside the crowd (--start 20) at 1920x1080 with each --aa, per method (compute, two-pass),
 # interleaved, twice, so drift shows; the frame's median and the GPU total against --aa off.
 # Prints the PSNR table and the cost table, and writes $OUT/aa.tgz (every run's output, the CSVs, the
@@ -13,12 +16,13 @@
 # image-downsample with their shared libraries in .devbin/ (carried).
 #   on the H100:      bash bench/run_aa.sh
 #   here on lavapipe: DEVICE= FRAMES=3 WARMUP=1 PICTURE_FRAMES=1 SIZE=320x180 BENCH_SIZE=320x180 \
-#                     STRESS_COUNT=8000 STRESS_PICTURE_COUNT=8000 LEVELS="off msaa4" bash bench/run_aa.sh
+#                     STRESS_COUNT=8000 STRESS_PICTURE_COUNT=8000 STRESS_SIZE=320x180 LEVELS="off msaa4" \
+#                     bash bench/run_aa.sh
 # FRAMES (default 300) and WARMUP (30): crowd-bench's --frames and --warmup; PICTURE_FRAMES (30):
 # crowd-render's --frames (the picture is the last frame's); DEVICE (NVIDIA): part of the device's
 # name, empty for the first device; SIZE (1280x720): the pictures'; BENCH_SIZE (1920x1080): the
 # timings'; STRESS_COUNT (100000): the timed stress crowd; STRESS_PICTURE_COUNT (1000000; 0 leaves
-# that picture out); LEVELS ("off msaa2 msaa4 msaa8"): the --aa values, off first.
+# that picture out) and STRESS_SIZE (1920x1080): the stress picture's; LEVELS ("off msaa2 msaa4 msaa8"): the --aa values, off first.
 set -uo pipefail
 frames=${FRAMES:-300}
 warmup=${WARMUP:-30}
@@ -28,6 +32,7 @@ size=${SIZE:-1280x720}
 bench_size=${BENCH_SIZE:-1920x1080}
 stress_count=${STRESS_COUNT:-100000}
 stress_picture_count=${STRESS_PICTURE_COUNT:-1000000}
+stress_size=${STRESS_SIZE:-1920x1080}
 read -r -a levels <<<"${LEVELS:-off msaa2 msaa4 msaa8}"
 bin=$PWD/.devbin
 res=/tmp/aa
@@ -71,19 +76,26 @@ times4() { local w=${1%x*} h=${1#*x}; echo "$((w * 4))x$((h * 4))"; }
 # ---- Pictures against the supersampled render ----
 pictures=("default|--scene default|$size" "paper-fig4|--scene paper-fig4|$size" "paper-fig5|--scene paper-fig5|$size")
 if [[ $stress_picture_count != 0 ]]; then
-  pictures+=("stress-above|--scene stress --count $stress_picture_count --impostors on --method compute|1920x1080")
+  pictures+=("stress-above|--scene stress --count $stress_picture_count --impostors on --method compute|$stress_size")
 fi
+same_lod=(--lod-thresholds "600,200" --impostor-threshold 128)  # the defaults (150,50 and 32) x 4
 for entry in "${pictures[@]}"; do
   IFS='|' read -r name flags picture_size <<<"$entry"
-  # shellcheck disable=SC2086  # flags are words
-  run "$name-4x" "$bin/crowd-render" "${device_flag[@]}" $flags --frames "$picture_frames" --aa off \
-    --size "$(times4 "$picture_size")" --out "$big/$name-4x.png" &&
-    run "$name-downsample" "$bin/image-downsample" "$big/$name-4x.png" 4 "$res/$name-supersampled.png"
+  for reference in supersampled same-lod; do
+    extra=(); [[ $reference == same-lod ]] && extra=("${same_lod[@]}")
+    # shellcheck disable=SC2086  # flags are words
+    run "$name-4x-$reference" "$bin/crowd-render" "${device_flag[@]}" $flags "${extra[@]}" --frames "$picture_frames" \
+      --aa off --size "$(times4 "$picture_size")" --out "$big/$name-4x-$reference.png" &&
+      run "$name-downsample-$reference" "$bin/image-downsample" "$big/$name-4x-$reference.png" 4 \
+        "$res/$name-$reference.png"
+  done
   for aa in "${levels[@]}"; do
     # shellcheck disable=SC2086
     run "$name-$aa" "$bin/crowd-render" "${device_flag[@]}" $flags --frames "$picture_frames" --aa "$aa" \
-      --size "$picture_size" --out "$res/$name-$aa.png" &&
-      "$bin/image-psnr" "$res/$name-supersampled.png" "$res/$name-$aa.png" >"$res/$name-$aa.psnr" 2>&1
+      --size "$picture_size" --out "$res/$name-$aa.png" || continue
+    for reference in supersampled same-lod; do
+      "$bin/image-psnr" "$res/$name-$reference.png" "$res/$name-$aa.png" >"$res/$name-$aa-$reference.psnr" 2>&1
+    done
   done
 done
 
@@ -127,19 +139,26 @@ for round in 1 2; do
 done
 
 {
-  echo
-  echo "PSNR against the 4x4 supersampled render (crowd-render at 4x the width and height, --aa off, box-filtered"
-  echo "down in linear light), last of $picture_frames frames, dB:"
-  printf "%-14s %-10s" picture size
-  for aa in "${levels[@]}"; do printf " %8s" "$aa"; done
-  echo
-  for entry in "${pictures[@]}"; do
-    IFS='|' read -r name flags picture_size <<<"$entry"
-    printf "%-14s %-10s" "$name" "$picture_size"
-    for aa in "${levels[@]}"; do
-      printf " %8s" "$(sed -n 's/^PSNR \([^ ]*\) dB.*/\1/p' "$res/$name-$aa.psnr" 2>/dev/null)"
-    done
+  for reference in supersampled same-lod; do
     echo
+    if [[ $reference == supersampled ]]; then
+      echo "PSNR against the 4x4 supersampled render (crowd-render at 4x the width and height, --aa off, box-filtered"
+      echo "down in linear light; the issue's measure), last of $picture_frames frames, dB:"
+    else
+      echo "PSNR against the same with the level-of-detail and impostor thresholds x 4 (${same_lod[*]}):"
+      echo "each character at the level the 1x frame draws it, so that what differs is sampling, dB:"
+    fi
+    printf "%-14s %-10s" picture size
+    for aa in "${levels[@]}"; do printf " %8s" "$aa"; done
+    echo
+    for entry in "${pictures[@]}"; do
+      IFS='|' read -r name flags picture_size <<<"$entry"
+      printf "%-14s %-10s" "$name" "$picture_size"
+      for aa in "${levels[@]}"; do
+        printf " %8s" "$(sed -n 's/^PSNR \([^ ]*\) dB.*/\1/p' "$res/$name-$aa-$reference.psnr" 2>/dev/null)"
+      done
+      echo
+    done
   done
   echo
   echo "Cost: crowd-bench medians over $frames frames after $warmup warm-up at $bench_size, ms; gpu: its GPU total"
