@@ -22,7 +22,10 @@
 # crowd-render's --frames (the picture is the last frame's); DEVICE (NVIDIA): part of the device's
 # name, empty for the first device; SIZE (1280x720): the pictures'; BENCH_SIZE (1920x1080): the
 # timings'; STRESS_COUNT (100000): the timed stress crowd; STRESS_PICTURE_COUNT (1000000; 0 leaves
-# that picture out) and STRESS_SIZE (1920x1080): the stress picture's; LEVELS ("off msaa2 msaa4 msaa8"): the --aa values, off first.
+# that picture out) and STRESS_SIZE (1920x1080): the stress picture's; LEVELS ("off msaa2 msaa4
+# msaa8"): the --aa values, off first.
+# PARTS ("pictures cost"): "pictures" or "cost" alone, to split the run over two device calls (each
+# call has 10 minutes; the whole run may need more).
 set -uo pipefail
 frames=${FRAMES:-300}
 warmup=${WARMUP:-30}
@@ -34,6 +37,7 @@ stress_count=${STRESS_COUNT:-100000}
 stress_picture_count=${STRESS_PICTURE_COUNT:-1000000}
 stress_size=${STRESS_SIZE:-1920x1080}
 read -r -a levels <<<"${LEVELS:-off msaa2 msaa4 msaa8}"
+parts=${PARTS:-pictures cost}
 bin=$PWD/.devbin
 res=/tmp/aa
 big=/tmp/aa-4x
@@ -74,12 +78,14 @@ run() {
 times4() { local w=${1%x*} h=${1#*x}; echo "$((w * 4))x$((h * 4))"; }
 
 # ---- Pictures against the supersampled render ----
+[[ $parts == *pictures* ]] || pictures_skipped=1
 pictures=("default|--scene default|$size" "paper-fig4|--scene paper-fig4|$size" "paper-fig5|--scene paper-fig5|$size")
 if [[ $stress_picture_count != 0 ]]; then
   pictures+=("stress-above|--scene stress --count $stress_picture_count --impostors on --method compute|$stress_size")
 fi
 same_lod=(--lod-thresholds "600,200" --impostor-threshold 128)  # the defaults (150,50 and 32) x 4
 for entry in "${pictures[@]}"; do
+  [[ -n ${pictures_skipped:-} ]] && break
   IFS='|' read -r name flags picture_size <<<"$entry"
   for reference in supersampled same-lod; do
     extra=(); [[ $reference == same-lod ]] && extra=("${same_lod[@]}")
@@ -126,6 +132,7 @@ scene_flags() {
   esac
 }
 for round in 1 2; do
+  [[ $parts == *cost* ]] || break
   for scene in paper-fig4 stress; do
     for method in compute two-pass; do
       for aa in "${levels[@]}"; do
