@@ -2,7 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // An impostor's pixel: the atlas's albedo and model-space normal (coverage-weighted, so divided by
 // coverage), the normal turned by the heading, and the same lighting as the mesh (shade()), so the
-// switch from mesh to impostor keeps the character's brightness. Texels under half coverage are cut.
+// switch from mesh to impostor keeps the character's brightness. Single-sampled, texels under half
+// coverage are cut; multisampled, the coverage goes out as alpha and the pipeline's alpha to coverage
+// turns it into the share of the pixel's samples the impostor covers.
 // Its shadow is looked up a pose-sphere radius nearer the light: the quad stands in for a body as deep as
 // that sphere, and its own shadow (a quad facing the light through the sphere's centre) must not fall on it.
 #include "gpu_types.h"
@@ -12,6 +14,7 @@ layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(set = 2, binding = 0) uniform sampler2DArray atlasAlbedo;
 layout(set = 2, binding = 1) uniform sampler2DArray atlasNormal;
 layout(push_constant) uniform Push { vec4 cameraPosition; };
+layout(constant_id = 0) const bool kAlphaToCoverage = false;
 
 layout(location = 0) in vec2 vUv;
 layout(location = 1) flat in uint vLayer;
@@ -24,12 +27,12 @@ layout(location = 0) out vec4 outColor;
 void main() {
     vec3 at = vec3(vUv, float(vLayer));
     vec4 albedo = texture(atlasAlbedo, at);
-    if (albedo.a < 0.5) discard;
+    if (albedo.a < (kAlphaToCoverage ? 1.0 / 255.0 : 0.5)) discard;  // (nothing covered: no depth either)
     vec4 packed = texture(atlasNormal, at);
     vec3 n = packed.rgb / packed.a * 2.0 - 1.0;
     float c = vHeading.x, s = vHeading.y;
     vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);
     vec3 lit = shadeLitFrom(scene, normal, albedo.rgb / albedo.a * vTint, vWorld,
                             vWorld + scene.lightDirection.xyz * vRadius, cameraPosition.xyz);
-    outColor = vec4(lit, 1.0);
+    outColor = vec4(lit, albedo.a);
 }

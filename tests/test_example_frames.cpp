@@ -34,14 +34,15 @@ struct SceneFrame {
 };
 
 // The last of three frames from `start`: crowd-render renders all three, the example one warm-up frame
-// and two timed ones.
+// and two timed ones. Single-sampled (--aa off), as the example's own target is.
 void expectExampleDrawsCrowdRendersFrame(const SceneFrame& frame) {
     const std::string name = std::string("example-frames-") + frame.scene + "-" + frame.method;
     const std::string png = test::artifactPath(name + ".png");
     const std::string common = std::string("--scene ") + frame.scene + " --method " + frame.method + " --start " +
                                frame.start;
     const test::ProgramResult program = test::runProgram(
-        CROWD_RENDER_BINARY, common + " --count " + frame.count + " --frames 3 --size 256x144 --validation --out " + png);
+        CROWD_RENDER_BINARY,
+        common + " --count " + frame.count + " --aa off --frames 3 --size 256x144 --validation --out " + png);
     ASSERT_EQ(program.exitCode, 0) << program.err;
 
     const std::filesystem::path dir = test::artifactPath(name);

@@ -139,15 +139,20 @@ TEST(Library, VersionMacroAndFunctionAgree) {
 }
 
 // The embedded crowd in the host's B8G8R8A8_SRGB target is crowd-render's picture of the same crowd,
-// camera and time, once the channels are swapped back.
+// camera and time, once the channels are swapped back; single-sampled, and with two-pass also with 4
+// samples per pixel resolved (crowd-render --aa msaa4, the target's sample count in the settings).
 TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
     const VkExtent2D size{256, 144};
-    for (const crowdgpu::Method method :
-         {crowdgpu::Method::TwoPass, crowdgpu::Method::VertexShader, crowdgpu::Method::Compute}) {
+    const std::pair<crowdgpu::Method, VkSampleCountFlagBits> runs[] = {
+        {crowdgpu::Method::TwoPass, VK_SAMPLE_COUNT_1_BIT},
+        {crowdgpu::Method::VertexShader, VK_SAMPLE_COUNT_1_BIT},
+        {crowdgpu::Method::Compute, VK_SAMPLE_COUNT_1_BIT},
+        {crowdgpu::Method::TwoPass, VK_SAMPLE_COUNT_4_BIT}};
+    for (const auto& [method, samples] : runs) {
         const std::string png = test::artifactPath(std::string("library-crowd-render-") + methodFlag(method) + ".png");
-        const test::ProgramResult r =
-            test::runProgram(CROWD_RENDER_BINARY, std::string("--count 64 --method ") + methodFlag(method) +
-                                                      " --frames 1 --size 256x144 --validation --out " + png);
+        const test::ProgramResult r = test::runProgram(
+            CROWD_RENDER_BINARY, std::string("--count 64 --method ") + methodFlag(method) + " --aa " +
+                                     app::antiAliasingName(samples) + " --frames 1 --size 256x144 --validation --out " + png);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const app::Rgba8Image program = readPng(png);
         ASSERT_EQ(program.width, size.width);
@@ -155,17 +160,18 @@ TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
         crowdgpu::Crowd crowd = defaultCrowd(64);
         HostDevice host(*context);
         crowdgpu::RendererSettings settings;
-        settings.target = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
+        settings.target = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT, samples};
         settings.method = method;
         crowdgpu::Renderer renderer(host.device, crowd, settings);
         runSetup(*context, renderer);
-        app::RenderTarget target(*device, size, VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT);
+        app::RenderTarget target(*device, size, settings.target);
         crowd.advanceTo(0.0f);
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
             recordFrame(renderer, cmd, 0, defaultView(crowd, size, 0.0f), target);
         });
         const app::Rgba8Image embedded = bgraToRgba(target.readback());
-        EXPECT_GE(test::fractionOfMatchingPixels(embedded, program, 1), 0.999) << methodFlag(method);
+        EXPECT_GE(test::fractionOfMatchingPixels(embedded, program, 1), 0.999)
+            << methodFlag(method) << " " << app::antiAliasingName(samples);
         std::filesystem::remove(png);
     }
 }
@@ -362,7 +368,9 @@ TEST_F(GpuTest, LibraryRefusesBadUseWithOneClearError) {
 TEST_F(GpuTest, ReadmeEmbeddingBlockDrawsTheCrowd) {
     const VkExtent2D size{256, 144};
     const std::string png = test::artifactPath("library-readme-crowd-render.png");
-    const test::ProgramResult r = test::runProgram(CROWD_RENDER_BINARY, "--frames 1 --size 256x144 --validation --out " + png);
+    // Single-sampled: the block's colour pass is (its pipelines are made for its target's one sample).
+    const test::ProgramResult r =
+        test::runProgram(CROWD_RENDER_BINARY, "--aa off --frames 1 --size 256x144 --validation --out " + png);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const app::Rgba8Image program = readPng(png);
     ASSERT_EQ(program.width, size.width);

@@ -85,6 +85,10 @@ const char* cullingName(Culling culling);
 struct TargetFormat {
     VkFormat color = VK_FORMAT_R8G8B8A8_SRGB;
     VkFormat depth = VK_FORMAT_D32_SFLOAT;
+    // Samples per pixel of the colour pass (multisampling): the ground, character and impostor
+    // pipelines are made for it; above one, impostors turn their coverage into samples covered (alpha
+    // to coverage) and write no alpha. Resolving into a single-sample image is the host's (at the end
+    // of its pass). The shadow map is the renderer's own and single-sampled.
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 

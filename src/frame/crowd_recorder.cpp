@@ -37,7 +37,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       maxTargetDimension_(options.maxTargetDimension),
       shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
       shadowMap_(context, options.shadowMapSize),
-      scene_(context, options.framesInFlight, pool_, shadowMap_, options.target),
+      scene_(context, options.framesInFlight, pool_, shadowMap_, options.target, !options.pointSampledGround),
       draw_(context, pool_, buffers_, lists_, scene_.setLayout(), options.target),
       method_(createMethod(options.method)),
       impostorSettings_(options.impostorSettings),

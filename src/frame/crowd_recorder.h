@@ -49,6 +49,9 @@ struct RecorderOptions {
     std::uint32_t shadowMapSize = 2048;  // texels per side
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
+    // Tests: the ground's tiles point-sampled, as before they were filtered (issue 19), to measure
+    // what filtering them gains.
+    bool pointSampledGround = false;
     // With impostors on at construction (cull.impostors), the most characters drawn at a mesh level
     // (LOD 0-2) in a frame: skinned vertices, visible lists and draws are sized for it, and culling
     // demotes the characters beyond it to impostors. 0, or a crowd no larger: no cap.

@@ -53,8 +53,9 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     VkShaderModule vertex = createShaderModule(context, desc.vertexShader);
     VkShaderModule fragment = createShaderModule(context, desc.fragmentShader);
 
-    std::vector<VkSpecializationMapEntry> entries;
+    std::vector<VkSpecializationMapEntry> entries, fragmentEntries;
     const VkSpecializationInfo specialization = specializationFor(desc.vertexConstants, entries);
+    const VkSpecializationInfo fragmentSpecialization = specializationFor(desc.fragmentConstants, fragmentEntries);
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                  {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -64,6 +65,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = fragment;
     stages[1].pName = "main";
+    stages[1].pSpecializationInfo = fragmentEntries.empty() ? nullptr : &fragmentSpecialization;
 
     VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertexInput.vertexBindingDescriptionCount = static_cast<std::uint32_t>(desc.bindings.size());
@@ -85,6 +87,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     raster.depthBiasSlopeFactor = desc.depthBiasSlope;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = desc.samples;
+    multisample.alphaToCoverageEnable = desc.alphaToCoverage;
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     const bool hasDepth = desc.depthFormat != VK_FORMAT_UNDEFINED;
     depth.depthTestEnable = hasDepth;
@@ -93,7 +96,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
     for (auto& blend : blends)
         blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                               VK_COLOR_COMPONENT_A_BIT;
+                               (desc.alphaToCoverage ? 0 : VK_COLOR_COMPONENT_A_BIT);
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = static_cast<std::uint32_t>(blends.size());
     blend.pAttachments = blends.data();

@@ -33,6 +33,12 @@ struct GraphicsPipelineDesc {
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     // Specialization constants of the vertex stage, ids 0, 1, ... in order.
     std::vector<std::uint32_t> vertexConstants;
+    // And of the fragment stage.
+    std::vector<std::uint32_t> fragmentConstants;
+    // Each sample's coverage from the alpha of the fragment's first output (multisampled targets):
+    // cut-out edges as smooth as geometry's, in any draw order, with depth. That alpha is a coverage,
+    // not a colour, so it is not written: the target keeps the alpha it was cleared to.
+    bool alphaToCoverage = false;
 };
 
 // Viewport and scissor are dynamic; rendering uses dynamic rendering with the given formats.

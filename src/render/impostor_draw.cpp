@@ -66,6 +66,11 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         desc.colorFormats = {target.color};
         desc.depthFormat = target.depth;
         desc.samples = target.samples;
+        // Multisampled, a texel's coverage in the atlas becomes the share of the pixel's samples it
+        // covers (as a mesh's edge does), with no sorting, unlike blending. Single-sampled, coverage
+        // would be a dither of one sample: the shader cuts at half instead.
+        desc.alphaToCoverage = target.samples != VK_SAMPLE_COUNT_1_BIT;
+        desc.fragmentConstants = {desc.alphaToCoverage ? 1u : 0u};
         desc.layout = layout_;
         desc.cullMode = VK_CULL_MODE_NONE;  // a quad facing the eye: its winding is not worth deriving
         pipeline_ = gpu::createGraphicsPipeline(context, desc);

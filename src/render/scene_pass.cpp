@@ -14,7 +14,7 @@
 namespace render {
 
 ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-                     const ShadowMap& shadowMap, const TargetFormat& target)
+                     const ShadowMap& shadowMap, const TargetFormat& target, bool filteredGround)
     : context_(context) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[4] = {
@@ -48,6 +48,7 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
     desc.colorFormats = {target.color};
     desc.depthFormat = target.depth;
     desc.samples = target.samples;
+    desc.fragmentConstants = {filteredGround ? 1u : 0u};
     desc.layout = groundLayout_;
     desc.cullMode = VK_CULL_MODE_NONE;
     groundPipeline_ = gpu::createGraphicsPipeline(context, desc);

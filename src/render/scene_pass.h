@@ -30,8 +30,10 @@ struct ScenePush {
 
 class ScenePass {
 public:
+    // `filteredGround`: the tiles integrated over each pixel's footprint (false: point-sampled, the
+    // moiré the filter removes; tests compare the two).
     ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-              const ShadowMap& shadowMap, const TargetFormat& target);
+              const ShadowMap& shadowMap, const TargetFormat& target, bool filteredGround = true);
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;

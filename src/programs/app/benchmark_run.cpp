@@ -18,7 +18,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     app::RendererOptions rendererOptions;
     static_cast<crowdgpu::RendererSettings&>(rendererOptions) =
         rendererSettings(options.scene.cull, options.method, options.scene.animation, options.scene.shadows,
-                         options.scene.meshCapacity);
+                         options.scene.meshCapacity, options.scene.samples);
     rendererOptions.impostorsFrom = options.impostorsFrom;
     rendererOptions.size = options.size;
     rendererOptions.passClock = options.passClock;
@@ -41,6 +41,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
                       impostorSummary(options.scene);
     summary.animation = std::string(crowdgpu::behaviourName(scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.scene.animation) + " animation";
+    summary.antiAliasing = antiAliasingName(options.scene.samples);
     summary.model = modelNames(models);
     summary.method = crowdgpu::methodName(options.method);
     summary.characters = options.count;

@@ -8,6 +8,7 @@
 #include "app/error.h"
 #include "app/host_device.h"
 #include "app/memory_shortfall.h"
+#include "app/render_target.h"
 
 namespace app {
 namespace {
@@ -47,9 +48,6 @@ int resolveClip(const crowdgpu::Model& model, const std::string& clip) {
     for (std::uint32_t c = 0; c < model.clipCount(); ++c) names += (names.empty() ? "" : ", ") + model.clipName(c);
     throw Error("--clip: " + model.name() + " has no clip '" + clip + "' (clips: " + names + ", or an index)");
 }
-
-// The render target's colour and depth (8 bytes a pixel).
-std::uint64_t imageBytes(VkExtent2D size) { return static_cast<std::uint64_t>(size.width) * size.height * 8; }
 
 }  // namespace
 
@@ -137,8 +135,10 @@ crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene)
 }
 
 crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::Method method,
-                                            crowdgpu::Animation animation, bool shadows, std::uint32_t meshCapacity) {
+                                            crowdgpu::Animation animation, bool shadows, std::uint32_t meshCapacity,
+                                            VkSampleCountFlagBits samples) {
     crowdgpu::RendererSettings settings;
+    settings.target.samples = samples;
     settings.method = method;
     settings.animation = animation;
     settings.culling = cull.mode;
@@ -156,16 +156,17 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
 
 std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd& crowd,
                                  const crowdgpu::RendererSettings& settings, VkExtent2D size) {
-    return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + imageBytes(size);
+    return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + renderTargetBytes(size, settings.target.samples);
 }
 
 void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, const crowdgpu::RendererSettings& settings,
                     VkExtent2D size) {
+    checkAntiAliasing(device, settings.target.samples);
     const std::uint64_t needed = estimateCrowdBytes(device, crowd, settings, size);
     const std::uint64_t available = device.deviceLocalBytes();
     if (needed > available)
         throw Error(describeShortfall({crowd.size(), size, crowdgpu::methodName(settings.method), needed,
-                                       imageBytes(size), available, device.description.name}));
+                                       renderTargetBytes(size, settings.target.samples), available, device.description.name}));
     const crowdgpu::DeviceLimitCheck limits = crowdgpu::checkDeviceLimits(device.physicalDevice, crowd, settings);
     if (limits.problem.empty()) return;
     const std::string flag = limits.meshCapacityBound ? "--mesh-capacity " + std::to_string(settings.meshCapacity)

@@ -50,16 +50,17 @@ CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<
 crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene);
 
 // The library's settings for the programs' options (the render target's formats are the library's
-// defaults, which the programs' target uses).
+// defaults, which the programs' target uses; `samples` is --aa's).
 crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::Method method,
-                                            crowdgpu::Animation animation, bool shadows, std::uint32_t meshCapacity);
+                                            crowdgpu::Animation animation, bool shadows, std::uint32_t meshCapacity,
+                                            VkSampleCountFlagBits samples);
 
 // Device memory a run takes: the library's memoryNeeded for the crowd and settings, and the
 // programs' render target of `size`.
 std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd& crowd,
                                  const crowdgpu::RendererSettings& settings, VkExtent2D size);
-// Throws a one-line Error naming the flag to change when the run cannot fit in the device's memory,
-// or a buffer the crowd binds whole as a storage buffer is over the device's range.
+// Throws a one-line Error naming the flag to change when the device cannot render the target's
+// sample count (--aa), the run cannot fit in the device's memory, or a buffer the crowd binds whole as a storage buffer is over the device's range.
 void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, const crowdgpu::RendererSettings& settings,
                     VkExtent2D size);
 

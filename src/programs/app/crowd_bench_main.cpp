@@ -41,6 +41,7 @@ usage: crowd-bench [options]
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
+  --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
   --impostors on|off   the impostor level for far characters (default off); with
@@ -156,10 +157,11 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         if (!given(args, "--models")) o.models = {preset.models};
         if (!given(args, "--counts")) o.counts = {preset.count};
     } else {
-        // Table 1, as in the paper: no culling, no LOD, unless asked for.
+        // Table 1, as in the paper: no culling, no LOD, no anti-aliasing, unless asked for.
         o.scene.scene.scene = "table-1";
         if (!given(args, "--cull")) o.scene.cull.mode = crowdgpu::Culling::Off;
         if (!given(args, "--lod")) o.scene.cull.lod = false;
+        if (!given(args, "--aa")) o.scene.samples = VK_SAMPLE_COUNT_1_BIT;
     }
     // Defaults of --quick and --palette; flags given anywhere on the line win over them.
     const bool countsGiven = given(args, "--counts"), framesGiven = given(args, "--frames"),
@@ -199,6 +201,7 @@ app::BenchResult measure(const app::HostDevice& context, const app::CrowdModels&
     result.count = count;
     result.vertices = model.vertexCount();
     result.triangles = model.triangleCount();
+    result.frame.antiAliasing = app::antiAliasingName(options.scene.samples);  // also on a skipped row
     app::ScenarioOptions scenario;
     scenario.scene = options.scene;
     scenario.count = count;
@@ -293,6 +296,8 @@ int run(const BenchOptions& options, const std::string& command) {
         crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot));
     checkHostMemory(crowds, options);
     app::HostDevice context({options.validation, options.device, {}, false});
+    // Once, before any row: a sample count the device lacks would otherwise skip every configuration.
+    if (!options.palette) app::checkAntiAliasing(context, options.scene.samples);
     const bool fencePasses = options.passClock == "fence" ||
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
     std::fprintf(stderr, "crowd-bench on %s (%s); per-pass clock: %s\n", context.description.name.c_str(),
@@ -319,9 +324,10 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    std::printf("scene %s: culling %s, LOD %s, shadows %s, camera %s from %.1f s\n", options.scene.scene.scene.c_str(),
-                crowdgpu::cullingName(options.scene.cull.mode), options.scene.cull.lod ? "on" : "off",
-                options.scene.shadows ? "on" : "off", app::cameraPathName(options.scene.camera),
+    std::printf("scene %s: culling %s, LOD %s, shadows %s, anti-aliasing %s, camera %s from %.1f s\n",
+                options.scene.scene.scene.c_str(), crowdgpu::cullingName(options.scene.cull.mode),
+                options.scene.cull.lod ? "on" : "off", options.scene.shadows ? "on" : "off",
+                app::antiAliasingName(options.scene.samples), app::cameraPathName(options.scene.camera),
                 options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);
     app::printPassTable(results);

@@ -101,7 +101,8 @@ int run(const app::RenderOptions& options) {
     crowdgpu::Crowd crowd = app::buildCrowd(models, options.scene);
     app::RendererOptions rendererOptions;
     static_cast<crowdgpu::RendererSettings&>(rendererOptions) =
-        app::rendererSettings(options.cull, options.method, options.animation, options.shadows, options.meshCapacity);
+        app::rendererSettings(options.cull, options.method, options.animation, options.shadows, options.meshCapacity,
+                              options.samples);
     rendererOptions.size = options.size;
     app::checkCrowdFits(context, crowd, rendererOptions, options.size);
     app::CrowdRenderer renderer(context, crowd, rendererOptions);
@@ -124,6 +125,7 @@ int run(const app::RenderOptions& options) {
                       ", shadows " + (options.shadows ? "on" : "off") + app::impostorSummary(options);
     summary.animation = std::string(crowdgpu::behaviourName(options.scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.animation) + " animation";
+    summary.antiAliasing = app::antiAliasingName(options.samples);
     summary.model = app::modelNames(models);
     summary.method = crowdgpu::methodName(options.method);
     summary.characters = crowd.size();

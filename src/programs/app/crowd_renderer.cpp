@@ -25,7 +25,7 @@ CrowdRenderer::CrowdRenderer(const HostDevice& device, crowdgpu::Crowd& crowd, c
     : device_(device),
       crowd_(crowd),
       renderer_(std::move(renderer)),
-      target_(std::make_unique<RenderTarget>(device, size)),
+      target_(std::make_unique<RenderTarget>(device, size, renderer_.settings().target)),
       timer_(device, renderer_.settings().framesInFlight, passClock),
       frames_(renderer_.settings().framesInFlight) {
     camera = frameCrowd(crowdShape(crowd), static_cast<float>(size.width) / static_cast<float>(size.height));
@@ -133,7 +133,7 @@ void CrowdRenderer::waitIdle() {
 void CrowdRenderer::resize(VkExtent2D size) {
     waitIdle();
     target_.reset();
-    target_ = std::make_unique<RenderTarget>(device_, size);
+    target_ = std::make_unique<RenderTarget>(device_, size, renderer_.settings().target);
 }
 
 void CrowdRenderer::setMethod(crowdgpu::Method method) {

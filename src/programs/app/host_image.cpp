@@ -31,7 +31,7 @@ bool isDepth(VkFormat format) {
 }  // namespace
 
 HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                      const std::string& what) {
+                      const std::string& what, VkSampleCountFlagBits samples) {
     HostImage image;
     image.extent = extent;
     image.format = format;
@@ -41,7 +41,7 @@ HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat form
     info.extent = {extent.width, extent.height, 1};
     info.mipLevels = 1;
     info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;

@@ -18,10 +18,10 @@ struct HostImage {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkDeviceSize bytes = 0;
 };
-// A device-local 2D image; a depth format gets a depth view. Throws Error naming `what` when the
-// device has no memory for it.
+// A device-local 2D image of `samples` per pixel; a depth format gets a depth view. Throws Error
+// naming `what` when the device has no memory for it.
 HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                      const std::string& what);
+                      const std::string& what, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
 void destroyImage(const HostDevice& device, HostImage& image);
 
 struct ReadbackBuffer {

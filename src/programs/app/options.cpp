@@ -13,8 +13,8 @@
 namespace app {
 
 
-const char* renderUsage() {
-    return R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
+namespace {
+constexpr const char* kRenderUsage = R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
 
 usage: crowd-render [options]
   --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march or mill: a
@@ -41,6 +41,9 @@ usage: crowd-render [options]
   --shadow-lod on|off     casters drawn into the shadow map at a level of detail from their size in it
                           (texels, the --lod-thresholds values), never finer than in view, and not at
                           all under 2 texels; off: at their level in view (default on)
+  --aa off|msaa2|msaa4|msaa8
+                          anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
+                          and ground, averaged into the picture (default %AA%)
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)
@@ -67,6 +70,17 @@ usage: crowd-render [options]
   --time SECONDS          time into the clip for --export-pose (default 0; clips loop)
   --help                  print this help and exit
 )";
+
+}  // namespace
+
+const char* renderUsage() {
+    // The default's name comes from the constant, so that moving the default moves the help.
+    static const std::string usage = [] {
+        std::string text = kRenderUsage;
+        text.replace(text.find("%AA%"), 4, antiAliasingName(kDefaultSamples));
+        return text;
+    }();
+    return usage.c_str();
 }
 
 std::uint32_t parseCount(const std::string& flag, const std::string& text, std::uint32_t min, std::uint32_t max) {
@@ -182,6 +196,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
         else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
         else if (flag == "--shadow-lod") options.cull.shadowLod = parseOnOff(flag, next());
+        else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
             options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);

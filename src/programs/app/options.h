@@ -10,6 +10,7 @@
 
 #include <crowdgpu/renderer.hpp>
 
+#include "app/anti_aliasing.h"
 #include "app/camera_path.h"
 #include "app/names.h"
 
@@ -49,6 +50,7 @@ struct RenderOptions {
     app::CameraPath camera = app::CameraPath::Framed;
     double startSeconds = 0.0;  // scene time of the first frame (where on the camera path a run begins)
     bool shadows = true;        // the directional light's shadow map
+    VkSampleCountFlagBits samples = kDefaultSamples;  // --aa: the colour pass's samples per pixel
     crowdgpu::Method method = crowdgpu::Method::TwoPass;
     crowdgpu::Animation animation = crowdgpu::Animation::Gpu;  // where bone matrices are computed
     // With impostors on (cull.impostors): the most characters at a mesh level (LOD 0-2) in a frame.

@@ -6,20 +6,29 @@
 
 namespace app {
 
-RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, VkFormat color, VkFormat depth)
-    : device_(device) {
-    color_ = createImage(device, extent, color, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                         "scene colour");
+RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format)
+    : device_(device), samples_(format.samples) {
     try {
-        depth_ = createImage(device, extent, depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "scene depth");
+        color_ = createImage(device, extent, format.color,
+                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "scene colour");
+        // The samples live only within the pass (resolved at its end): transient, never copied.
+        if (samples_ != VK_SAMPLE_COUNT_1_BIT)
+            multisampled_ = createImage(device, extent, format.color,
+                                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                                        "scene colour samples", samples_);
+        depth_ = createImage(device, extent, format.depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "scene depth",
+                             samples_);
     } catch (...) {
-        destroyImage(device, color_);
+        release();
         throw;
     }
 }
 
-RenderTarget::~RenderTarget() {
+RenderTarget::~RenderTarget() { release(); }
+
+void RenderTarget::release() {
     destroyImage(device_, depth_);
+    destroyImage(device_, multisampled_);
     destroyImage(device_, color_);
 }
 
@@ -30,6 +39,12 @@ void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]
                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    const bool multisampled = multisampled_.image != VK_NULL_HANDLE;
+    if (multisampled)  // the previous frame's samples were written in the pass (and discarded at its end)
+        transitionImage(cmd, multisampled_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
+                        VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     constexpr VkPipelineStageFlags2 depthTests =
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     transitionImage(cmd, depth_.image, VK_IMAGE_ASPECT_DEPTH_BIT, depthTests,
@@ -38,10 +53,17 @@ void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
 
     VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    colorAttachment.imageView = color_.view;
+    colorAttachment.imageView = multisampled ? multisampled_.view : color_.view;
     colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    if (multisampled) {
+        // The average of a pixel's samples is its picture; the samples themselves are not kept.
+        colorAttachment.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        colorAttachment.resolveImageView = color_.view;
+        colorAttachment.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    }
     std::memcpy(colorAttachment.clearValue.color.float32, clearColor, 4 * sizeof(float));
     VkRenderingAttachmentInfo depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depthAttachment.imageView = depth_.view;
@@ -60,7 +82,8 @@ void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]
 
 void RenderTarget::endRendering(VkCommandBuffer cmd) {
     vkCmdEndRendering(cmd);
-    // Any transfer next: the readback copies, the viewer blits to its swapchain.
+    // Any transfer next: the readback copies, the viewer blits to its swapchain. The resolve, too, is
+    // a colour attachment write.
     transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                     VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
@@ -80,6 +103,12 @@ Rgba8Image RenderTarget::readback() {
     std::memcpy(image.pixels.data(), staging.mapped, size);
     destroyReadbackBuffer(device_, staging);
     return image;
+}
+
+std::uint64_t renderTargetBytes(VkExtent2D extent, VkSampleCountFlagBits samples) {
+    // 4 bytes of colour and 4 of depth per sample, and the resolved colour beside the samples.
+    const std::uint64_t pixels = static_cast<std::uint64_t>(extent.width) * extent.height;
+    return pixels * (8 * static_cast<std::uint64_t>(samples) + (samples == VK_SAMPLE_COUNT_1_BIT ? 0 : 4));
 }
 
 }  // namespace app

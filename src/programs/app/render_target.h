@@ -1,5 +1,9 @@
 #pragma once
 // The programs' offscreen image the scene is drawn into (sRGB colour + depth), and its readback.
+// Multisampled (--aa), the pass draws into a colour and a depth image of that many samples per
+// pixel and resolves the colour, as the pass ends, into the single-sample image that is read back
+// or presented; without multisampling it draws into that image directly.
+#include <crowdgpu/renderer.hpp>
 #include <vulkan/vulkan.h>
 
 #include "app/host_image.h"
@@ -13,27 +17,39 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 class RenderTarget {
 public:
-    // 4-byte colour formats only (the readback copies 4 bytes a pixel).
+    // 4-byte colour formats only (the readback copies 4 bytes a pixel). The library's renderer must
+    // have been made for the same formats and sample count (crowdgpu::RendererSettings::target).
+    RenderTarget(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format);
     RenderTarget(const HostDevice& device, VkExtent2D extent, VkFormat color = kColorFormat,
-                 VkFormat depth = kDepthFormat);
+                 VkFormat depth = kDepthFormat)
+        : RenderTarget(device, extent, crowdgpu::TargetFormat{color, depth, VK_SAMPLE_COUNT_1_BIT}) {}
     ~RenderTarget();
     RenderTarget(const RenderTarget&) = delete;
     RenderTarget& operator=(const RenderTarget&) = delete;
 
     VkExtent2D extent() const { return color_.extent; }
+    VkSampleCountFlagBits samples() const { return samples_; }
+    // The single-sample picture (resolved when multisampled).
     VkImage colorImage() const { return color_.image; }
     // Transitions the images and begins dynamic rendering, clearing to `clearColor` (linear).
     void beginRendering(VkCommandBuffer cmd, const float clearColor[4]);
-    // Ends rendering and leaves the colour image ready to be copied out.
+    // Ends rendering (resolving the samples) and leaves the colour image ready to be copied out.
     void endRendering(VkCommandBuffer cmd);
     // Copies the last rendered frame to the host (waits for the GPU).
     Rgba8Image readback();
-    VkDeviceSize bytes() const { return color_.bytes + depth_.bytes; }
+    VkDeviceSize bytes() const { return color_.bytes + multisampled_.bytes + depth_.bytes; }
 
 private:
+    void release();
+
     const HostDevice& device_;
+    VkSampleCountFlagBits samples_;
     HostImage color_;
+    HostImage multisampled_;  // the samples, resolved into color_ (none when single-sampled)
     HostImage depth_;
 };
+
+// Device bytes of a target of this size and sample count (about: the images' own alignment aside).
+std::uint64_t renderTargetBytes(VkExtent2D extent, VkSampleCountFlagBits samples);
 
 }  // namespace app

@@ -106,9 +106,9 @@ void printSummary(const RunSummary& s) {
     std::printf("%s: %s x %u, %s, %u frames (%u measured) on %s (%s)\n", s.scene.c_str(), s.model.c_str(),
                 s.characters, s.method.c_str(), s.frames, s.measuredFrames, s.device.c_str(), s.driver.c_str());
     std::printf("  drawn: %.0f / %.0f / %.0f characters at LOD 0 / 1 / 2, %.0f impostors (%.0f over the mesh cap), "
-                "%.2f M triangles  [culling %s]\n",
+                "%.2f M triangles  [culling %s; anti-aliasing %s]\n",
                 s.medianVisible[0], s.medianVisible[1], s.medianVisible[2], s.medianImpostors, s.medianDemoted,
-                s.medianTriangles / 1e6, s.culling.c_str());
+                s.medianTriangles / 1e6, s.culling.c_str(), s.antiAliasing.c_str());
     std::printf("  shadow: %.0f / %.0f / %.0f casters at LOD 0 / 1 / 2, %.0f impostors, %.2f M triangles\n",
                 s.medianShadowCasters[0], s.medianShadowCasters[1], s.medianShadowCasters[2], s.medianShadowImpostors,
                 s.medianShadowTriangles / 1e6);
@@ -133,6 +133,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["model"] = s.model;
     json["culling"] = s.culling;
     json["animation"] = s.animation;
+    json["aa"] = s.antiAliasing;
     json["median_visible_per_lod"] = {s.medianVisible[0], s.medianVisible[1], s.medianVisible[2]};
     json["median_triangles"] = s.medianTriangles;
     json["median_impostors"] = s.medianImpostors;

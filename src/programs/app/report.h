@@ -18,6 +18,7 @@ struct RunSummary {
     std::string method;
     std::string culling;  // "gpu", "cpu", "off", with "LOD on/off"
     std::string animation = "in-place, gpu animation";  // behaviour and animation path
+    std::string antiAliasing = "off";  // --aa
     std::uint32_t characters = 0;
     // Medians over the measured frames: visible characters per level of detail, triangles drawn.
     double medianVisible[app::kLodCount] = {};

@@ -20,9 +20,11 @@ namespace view {
 class CrowdScene {
 public:
     // Throws app::Error (one line) for a model, clip or crowd size that cannot be shown.
-    // `meshCapacity`: --mesh-capacity, which applies (as in crowd-render) when impostors are on.
+    // `meshCapacity`: --mesh-capacity, which applies (as in crowd-render) when impostors are on;
+    // `samples`: --aa's samples per pixel.
     CrowdScene(const app::HostDevice& context, const app::SceneOptions& scene, crowdgpu::Method method,
-               const app::CullOptions& cull, bool shadows, std::uint32_t meshCapacity, VkExtent2D size);
+               const app::CullOptions& cull, bool shadows, std::uint32_t meshCapacity, VkSampleCountFlagBits samples,
+               VkExtent2D size);
 
     // Builds the crowd for new scene options. Checks everything that can be checked (model, clip,
     // memory) before the current crowd is released, and throws app::Error keeping it when a check
@@ -58,6 +60,7 @@ private:
     app::CullOptions cull_;
     bool shadows_;
     std::uint32_t meshCapacity_;
+    VkSampleCountFlagBits samples_;
     crowdgpu::Animation animation_ = crowdgpu::Animation::Gpu;
     app::CrowdModels models_;
     std::unique_ptr<crowdgpu::Crowd> crowd_;

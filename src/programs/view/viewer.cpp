@@ -50,17 +50,17 @@ Viewer::Viewer(const ViewerOptions& options)
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
       scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
-             options.render.meshCapacity, swapchain_.extent()) {
+             options.render.meshCapacity, options.render.samples, swapchain_.extent()) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
     scene_.setAnimation(options.render.animation);
     controls_.scenePath = options.render.camera != app::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
     frameHome(true);
     maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
-    std::printf("crowd-view: %s (%s), %u x %s, %s, %ux%u, %s\n", context_.description.name.c_str(),
+    std::printf("crowd-view: %s (%s), %u x %s, %s, %ux%u, anti-aliasing %s, %s\n", context_.description.name.c_str(),
                 context_.description.driver.c_str(), scene_.crowd().size(), scene_.model().name().c_str(),
                 crowdgpu::methodName(scene_.method()), swapchain_.extent().width, swapchain_.extent().height,
-                presentModeName(swapchain_.presentMode()));
+                app::antiAliasingName(options.render.samples), presentModeName(swapchain_.presentMode()));
     for (const std::string& n : scene_.takeNotes()) note(n);
 }
 

@@ -1,0 +1,196 @@
+#!/usr/bin/env bash
+# Issue 19's anti-aliasing measured on a lent GPU machine. Pictures: the default scene, paper-fig4 and
+# paper-fig5 at 1280x720 (and, as in the issue's table, stress 1,000,000 from above with impostors at
+# 1920x1080), each with --aa off, msaa2, msaa4 and msaa8, against a 4x4 supersampled render of the
+# same frame (crowd-render at 4x the width and height, box-filtered down in linear light by
+# image-downsample), compared by image-psnr; and against a second reference that also scales the
+# pixel thresholds of the levels of detail and impostors by 4 (--lod-thresholds 600,200
+# --impostor-threshold 128), so that it draws each character at the level the 1x frame does: the
+# first reference's finer levels differ from the 1x frame by more than its edges do. Cost: crowd-bench on paper-fig4 and stress 100,000
+# inside the crowd (--start 20) at 1920x1080 with each --aa, per method (compute, two-pass),
+# interleaved, twice, so drift shows; the frame's median and the GPU total against --aa off.
+# Prints the PSNR table and the cost table, and writes $OUT/aa.tgz (every run's output, the CSVs, the
+# pictures at 1280x720, the references brought down; the 4x renders stay in /tmp/aa-4x).
+#
+# Expects the Vulkan loader packages in .gl/ and crowd-render, crowd-bench, image-psnr and
+# image-downsample with their shared libraries in .devbin/ (carried).
+#   on the H100:      bash bench/run_aa.sh
+#   here on lavapipe: DEVICE= FRAMES=3 WARMUP=1 PICTURE_FRAMES=1 SIZE=320x180 BENCH_SIZE=320x180 \
+#                     STRESS_COUNT=8000 STRESS_PICTURE_COUNT=8000 STRESS_SIZE=320x180 LEVELS="off msaa4" \
+#                     bash bench/run_aa.sh
+# FRAMES (default 300) and WARMUP (30): crowd-bench's --frames and --warmup; PICTURE_FRAMES (30):
+# crowd-render's --frames (the picture is the last frame's); DEVICE (NVIDIA): part of the device's
+# name, empty for the first device; SIZE (1280x720): the pictures'; BENCH_SIZE (1920x1080): the
+# timings'; STRESS_COUNT (100000): the timed stress crowd; STRESS_PICTURE_COUNT (1000000; 0 leaves
+# that picture out) and STRESS_SIZE (1920x1080): the stress picture's; LEVELS ("off msaa2 msaa4
+# msaa8"): the --aa values, off first.
+# PARTS ("pictures cost"): "pictures" or "cost" alone, to split the run over two device calls (each
+# call has 10 minutes; the whole run may need more).
+set -uo pipefail
+frames=${FRAMES:-300}
+warmup=${WARMUP:-30}
+picture_frames=${PICTURE_FRAMES:-30}
+device=${DEVICE-NVIDIA}
+size=${SIZE:-1280x720}
+bench_size=${BENCH_SIZE:-1920x1080}
+stress_count=${STRESS_COUNT:-100000}
+stress_picture_count=${STRESS_PICTURE_COUNT:-1000000}
+stress_size=${STRESS_SIZE:-1920x1080}
+read -r -a levels <<<"${LEVELS:-off msaa2 msaa4 msaa8}"
+parts=${PARTS:-pictures cost}
+bin=$PWD/.devbin
+res=/tmp/aa
+big=/tmp/aa-4x
+out=${OUT:-/tmp/out}
+rm -rf "$res" "$big"
+mkdir -p "$res" "$big" "$out"
+if [[ -d .gl ]]; then
+  for f in .gl/*.deb; do dpkg -x "$f" /; done
+  ldconfig
+fi
+export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+device_flag=()
+[[ -n $device ]] && device_flag=(--device "$device")
+# The device by name, or the NVIDIA driver is not among the loader's: name its ICD.
+probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --aa off --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
+if ! probe && [[ -n $device ]]; then
+  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+  probe || { cat "$res/probe.txt"; echo "run_aa: no device named like '$device'"; exit 1; }
+fi
+nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem --format=csv >"$res/nvidia-smi.txt" 2>&1
+cat "$res/nvidia-smi.txt"
+
+failures=0
+# run NAME PROGRAM ARGS...: its output in $res/NAME.txt, its command in commands.txt.
+run() {
+  local name=$1; shift
+  echo "$*" >>"$res/commands.txt"
+  echo "== $name"
+  "$@" >"$res/$name.txt" 2>&1
+  local status=$?
+  if [[ $status != 0 ]]; then
+    failures=$((failures + 1))
+    echo "   failed (exit $status):"; tail -3 "$res/$name.txt"
+  fi
+  return $status
+}
+# WxH times 4 in each direction.
+times4() { local w=${1%x*} h=${1#*x}; echo "$((w * 4))x$((h * 4))"; }
+
+# ---- Pictures against the supersampled render ----
+[[ $parts == *pictures* ]] || pictures_skipped=1
+pictures=("default|--scene default|$size" "paper-fig4|--scene paper-fig4|$size" "paper-fig5|--scene paper-fig5|$size")
+if [[ $stress_picture_count != 0 ]]; then
+  pictures+=("stress-above|--scene stress --count $stress_picture_count --impostors on --method compute|$stress_size")
+fi
+same_lod=(--lod-thresholds "600,200" --impostor-threshold 128)  # the defaults (150,50 and 32) x 4
+for entry in "${pictures[@]}"; do
+  [[ -n ${pictures_skipped:-} ]] && break
+  IFS='|' read -r name flags picture_size <<<"$entry"
+  for reference in supersampled same-lod; do
+    extra=(); [[ $reference == same-lod ]] && extra=("${same_lod[@]}")
+    # shellcheck disable=SC2086  # flags are words
+    run "$name-4x-$reference" "$bin/crowd-render" "${device_flag[@]}" $flags "${extra[@]}" --frames "$picture_frames" \
+      --aa off --size "$(times4 "$picture_size")" --out "$big/$name-4x-$reference.png" &&
+      run "$name-downsample-$reference" "$bin/image-downsample" "$big/$name-4x-$reference.png" 4 \
+        "$res/$name-$reference.png"
+  done
+  for aa in "${levels[@]}"; do
+    # shellcheck disable=SC2086
+    run "$name-$aa" "$bin/crowd-render" "${device_flag[@]}" $flags --frames "$picture_frames" --aa "$aa" \
+      --size "$picture_size" --out "$res/$name-$aa.png" || continue
+    for reference in supersampled same-lod; do
+      "$bin/image-psnr" "$res/$name-$reference.png" "$res/$name-$aa.png" >"$res/$name-$aa-$reference.psnr" 2>&1
+    done
+  done
+done
+
+# ---- Cost ----
+# The value of column $2 in the first data row of the CSV file $1 (quoted fields may hold commas).
+csv_value() {
+  awk -v want="$2" '
+    function fields(line, out,   n, i, c, field, quoted) {
+      n = 0; field = ""; quoted = 0
+      for (i = 1; i <= length(line); i++) {
+        c = substr(line, i, 1)
+        if (c == "\"") quoted = !quoted
+        else if (c == "," && !quoted) { out[++n] = field; field = "" }
+        else field = field c
+      }
+      out[++n] = field
+      return n
+    }
+    NR == 1 { n = fields($0, head); for (i = 1; i <= n; i++) if (head[i] == want) column = i; next }
+    NR == 2 { fields($0, row); if (column) print row[column]; exit }' "$1" 2>/dev/null
+}
+# Percent by which $2 is over $1.
+percent() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b != "") printf "%+.1f%%", 100 * (b - a) / a; else print "-" }'; }
+scene_flags() {
+  case $1 in
+    paper-fig4) echo "--scene paper-fig4" ;;
+    stress) echo "--scene stress --counts $stress_count --start 20" ;;
+  esac
+}
+for round in 1 2; do
+  [[ $parts == *cost* ]] || break
+  for scene in paper-fig4 stress; do
+    for method in compute two-pass; do
+      for aa in "${levels[@]}"; do
+        key=$scene-$method-$aa-$round
+        # shellcheck disable=SC2046  # scene_flags gives words
+        run "bench-$key" "$bin/crowd-bench" "${device_flag[@]}" $(scene_flags $scene) --methods $method --aa "$aa" \
+          --frames "$frames" --warmup "$warmup" --size "$bench_size" --csv "$res/bench-$key.csv"
+      done
+    done
+  done
+done
+
+{
+  for reference in supersampled same-lod; do
+    echo
+    if [[ $reference == supersampled ]]; then
+      echo "PSNR against the 4x4 supersampled render (crowd-render at 4x the width and height, --aa off, box-filtered"
+      echo "down in linear light; the issue's measure), last of $picture_frames frames, dB:"
+    else
+      echo "PSNR against the same with the level-of-detail and impostor thresholds x 4 (${same_lod[*]}):"
+      echo "each character at the level the 1x frame draws it, so that what differs is sampling, dB:"
+    fi
+    printf "%-14s %-10s" picture size
+    for aa in "${levels[@]}"; do printf " %8s" "$aa"; done
+    echo
+    for entry in "${pictures[@]}"; do
+      IFS='|' read -r name flags picture_size <<<"$entry"
+      printf "%-14s %-10s" "$name" "$picture_size"
+      for aa in "${levels[@]}"; do
+        printf " %8s" "$(sed -n 's/^PSNR \([^ ]*\) dB.*/\1/p' "$res/$name-$aa-$reference.psnr" 2>/dev/null)"
+      done
+      echo
+    done
+  done
+  echo
+  echo "Cost: crowd-bench medians over $frames frames after $warmup warm-up at $bench_size, ms; gpu: its GPU total"
+  echo "($(csv_value "$res/bench-paper-fig4-compute-off-1.csv" pass_clock)), draw: its draw pass (the colour pass), frame: wall clock"
+  echo "between frame starts, two frames in flight; +%: against --aa off of the same round."
+  printf "%-10s %-8s %-6s %1s | %8s %7s | %8s %7s | %8s %7s\n" scene method aa r gpu "+%" draw "+%" frame "+%"
+  for round in 1 2; do
+    for scene in paper-fig4 stress; do
+      for method in compute two-pass; do
+        base=$res/bench-$scene-$method-off-$round.csv
+        base_gpu=$(csv_value "$base" gpu_total_ms) base_draw=$(csv_value "$base" gpu_draw_ms)
+        base_frame=$(csv_value "$base" median_frame_ms)
+        for aa in "${levels[@]}"; do
+          csv=$res/bench-$scene-$method-$aa-$round.csv
+          gpu='' draw='' frame=''
+          if [[ $(csv_value "$csv" status) == ok ]]; then  # a skipped row has zeros
+            gpu=$(csv_value "$csv" gpu_total_ms) draw=$(csv_value "$csv" gpu_draw_ms) frame=$(csv_value "$csv" median_frame_ms)
+          fi
+          printf "%-10s %-8s %-6s %1s | %8s %7s | %8s %7s | %8s %7s\n" "$scene" "$method" "$aa" "$round" \
+            "${gpu:--}" "$(percent "$base_gpu" "$gpu")" "${draw:--}" "$(percent "$base_draw" "$draw")" \
+            "${frame:--}" "$(percent "$base_frame" "$frame")"
+        done
+      done
+    done
+  done
+} | tee "$res/summary.txt"
+tar -czf "$out/aa.tgz" -C /tmp aa
+[[ $failures == 0 ]] || { echo "run_aa: $failures run(s) failed (see their .txt in aa.tgz)"; exit 1; }

@@ -1,0 +1,129 @@
+// Anti-aliasing (--aa): the colour pass multisampled and resolved into the picture. Against a 4x4
+// supersampled render of the same frame (4x the width and height, box-filtered down in linear light:
+// app/image_downsample.h), 4 samples per pixel come closer than one by a stated margin, for the
+// default scene and for impostors (alpha to coverage); the resolved picture stays opaque; and --aa
+// refuses, in one line, a name it does not know and a sample count the device lacks.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "app/anti_aliasing.h"
+#include "app/image_difference.h"
+#include "app/image_downsample.h"
+#include "app/png_reader.h"
+#include "support/gpu_test.h"
+#include "support/run_program.h"
+
+namespace {
+
+const std::string kRender = CROWD_RENDER_BINARY;
+const std::string kBench = CROWD_BENCH_BINARY;
+
+std::string tempFile(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("crowd-aa-" + std::to_string(::getpid()) + "-" + name)).string();
+}
+
+std::string deviceFlag() {
+    const char* device = std::getenv("CROWD_TEST_DEVICE");
+    return device ? std::string(" --device '") + device + "'" : "";
+}
+
+// crowd-render's last frame of `scene` at `size` with `aa`, validation on (it must stay silent).
+app::Rgba8Image render(const std::string& scene, const std::string& size, const std::string& aa) {
+    const std::string png = tempFile(aa + "-" + size + ".png");
+    const test::ProgramResult r =
+        test::runProgram(kRender, scene + " --frames 1 --validation --size " + size + " --aa " + aa + " --out " + png + deviceFlag());
+    EXPECT_EQ(r.exitCode, 0) << scene << " --aa " << aa << ": " << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+    app::Rgba8Image image = app::readPng(png);
+    std::filesystem::remove(png);
+    return image;
+}
+
+struct Closeness {
+    double off = 0.0, msaa4 = 0.0;  // PSNR against the supersampled render, dB
+    app::Rgba8Image multisampled;
+};
+
+// The scene at 256x144 without and with 4 samples per pixel, each against its render at 1024x576
+// box-filtered down.
+Closeness closenessToSupersampled(const std::string& scene, const std::string& name) {
+    const app::Rgba8Image reference = app::boxDownsample(render(scene, "1024x576", "off"), 4);
+    const app::Rgba8Image off = render(scene, "256x144", "off");
+    Closeness c;
+    c.multisampled = render(scene, "256x144", "msaa4");
+    c.off = app::compareImages(reference, off).psnr;
+    c.msaa4 = app::compareImages(reference, c.multisampled).psnr;
+    std::printf("%s: PSNR against the 4x4 supersampled render %.2f dB off, %.2f dB msaa4\n", name.c_str(), c.off,
+                c.msaa4);
+    if (c.msaa4 < c.off + 3.0) {
+        app::writePng(test::artifactPath(name + "-supersampled.png"), reference);
+        app::writePng(test::artifactPath(name + "-off.png"), off);
+        app::writePng(test::artifactPath(name + "-msaa4.png"), c.multisampled);
+    }
+    return c;
+}
+
+// A device that cannot do 4 samples (the Vulkan spec requires every device to) would skip.
+bool hasFourSamples(const app::HostDevice& device) {
+    return (device.properties.limits.framebufferColorSampleCounts & device.properties.limits.framebufferDepthSampleCounts &
+            VK_SAMPLE_COUNT_4_BIT) != 0;
+}
+
+}  // namespace
+
+using test::GpuTest;
+
+TEST_F(GpuTest, FourSamplesBringTheDefaultSceneTowardsItsSupersampledRender) {
+    if (!hasFourSamples(*device)) GTEST_SKIP() << "no 4-sample colour and depth on this device";
+    // Lavapipe: 26.9 dB off, 33.6 dB msaa4 (+6.8 dB); the margin asked is under half that.
+    const Closeness c = closenessToSupersampled("--scene default", "default-scene");
+    EXPECT_GT(c.msaa4, c.off + 3.0);
+}
+
+TEST_F(GpuTest, FourSamplesBringImpostorsTowardsTheirSupersampledRender) {
+    if (!hasFourSamples(*device)) GTEST_SKIP() << "no 4-sample colour and depth on this device";
+    // Inside a crowd of impostors (alpha to coverage at 4 samples, their cut at half coverage at 1).
+    // Lavapipe: 30.3 dB off, 34.9 dB msaa4 (+4.5 dB); the margin asked is under half that.
+    const Closeness c = closenessToSupersampled("--scene stress --count 4000 --start 20 --impostors on --method compute",
+                                                "impostors");
+    EXPECT_GT(c.msaa4, c.off + 2.0);
+    // Alpha to coverage turns an impostor's alpha into samples covered, not into the picture's alpha.
+    const std::vector<std::uint8_t>& p = c.multisampled.pixels;
+    std::size_t translucent = 0;
+    for (std::size_t i = 3; i < p.size(); i += 4) translucent += p[i] != 255;
+    EXPECT_EQ(translucent, 0u) << "pixels whose alpha is not 255";
+}
+
+TEST_F(GpuTest, AaRefusesUnknownNamesAndSampleCountsTheDeviceLacksInOneLine) {
+    auto expectOneLine = [](const std::string& program, const std::string& arguments, const std::string& mention) {
+        const test::ProgramResult r = test::runProgram(program, arguments + deviceFlag());
+        EXPECT_EQ(r.exitCode, 1) << arguments << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << arguments << " printed:\n" << r.err;
+        EXPECT_NE(r.err.find(mention), std::string::npos) << arguments << " printed:\n" << r.err;
+    };
+    for (const std::string& program : {kRender, kBench})
+        expectOneLine(program, "--aa msaa16", "--aa: 'msaa16' is not off, msaa2, msaa4 or msaa8");
+#ifdef CROWD_VIEW_BINARY
+    expectOneLine(CROWD_VIEW_BINARY, "--aa on", "--aa: 'on' is not off, msaa2, msaa4 or msaa8");
+#endif
+    // The first count this device lacks (lavapipe: 2), named with the device and what it can do.
+    const VkSampleCountFlags counts =
+        device->properties.limits.framebufferColorSampleCounts & device->properties.limits.framebufferDepthSampleCounts;
+    for (VkSampleCountFlagBits samples : {VK_SAMPLE_COUNT_2_BIT, VK_SAMPLE_COUNT_4_BIT, VK_SAMPLE_COUNT_8_BIT}) {
+        if (counts & samples) continue;
+        const std::string aa = app::antiAliasingName(samples);
+        const std::string words = "--aa " + aa + ": " + device->description.name + " cannot render " +
+                                  std::to_string(samples) + " samples per pixel (it can: ";
+        expectOneLine(kRender, "--count 4 --frames 1 --size 64x64 --out /dev/null --aa " + aa, words);
+        expectOneLine(kBench, "--quick --methods compute --aa " + aa, words);
+        return;
+    }
+    std::printf("this device renders 2, 4 and 8 samples: no count to refuse\n");
+}
