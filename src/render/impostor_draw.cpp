@@ -80,6 +80,8 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         shadow.colorFormats = {};
         shadow.depthFormat = kShadowFormat;
         shadow.samples = VK_SAMPLE_COUNT_1_BIT;
+        shadow.alphaToCoverage = false;  // no colour, one sample: its shader cuts the quad at half coverage
+        shadow.fragmentConstants = {};
         shadow.depthBiasConstant = 1.0f;
         shadow.depthBiasSlope = 1.5f;
         shadow.vertexConstants = {1u};  // SHADOW_PASS
