@@ -34,5 +34,7 @@ void main() {
     vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);
     vec3 lit = shadeLitFrom(scene, normal, albedo.rgb / albedo.a * vTint, vWorld,
                             vWorld + scene.lightDirection.xyz * vRadius, cameraPosition.xyz);
-    outColor = vec4(lit, albedo.a);
+    // Alpha to coverage reads the coverage from alpha (and the pipeline does not write it); single-sampled
+    // the pixel is opaque.
+    outColor = vec4(lit, kAlphaToCoverage ? albedo.a : 1.0);
 }
