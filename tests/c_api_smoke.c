@@ -204,9 +204,18 @@ int main(void) {
     crowdgpu_crowd crowd = NULL;
     EXPECT(crowdgpu_crowd_create_grid(&soldier, 1, 16, 1, CROWDGPU_IN_PLACE, &crowd) == CROWDGPU_OK, "grid: %s",
            crowdgpu_last_error());
+    const int32_t hand = crowdgpu_model_find_joint(soldier, "hand_r");
+    EXPECT(hand >= 0 && crowdgpu_model_find_joint(soldier, "tail") == -1, "find_joint: hand_r %d", hand);
     crowdgpu_model_destroy(soldier); /* the crowd keeps its models */
     if (!crowd) return 1;
     EXPECT(crowdgpu_crowd_size(crowd) == 16, "crowd size %u", crowdgpu_crowd_size(crowd));
+    /* A hand hangs between the soldier's knees and shoulders (the C++ tests compare it with the mesh). */
+    float hand_rows[12];
+    EXPECT(crowdgpu_crowd_joint_world(crowd, 0, (uint32_t)hand, 0.5, hand_rows) == CROWDGPU_OK, "joint_world: %s",
+           crowdgpu_last_error());
+    EXPECT(hand_rows[7] > 0.5f && hand_rows[7] < 1.5f, "hand at height %f", hand_rows[7]);
+    EXPECT(crowdgpu_crowd_joint_world(crowd, 16, 0, 0.5, hand_rows) == CROWDGPU_ERROR_INVALID_ARGUMENT,
+           "joint_world of a character the crowd lacks");
 
     crowdgpu_renderer_settings settings;
     crowdgpu_renderer_settings_default(&settings);

@@ -7,6 +7,7 @@
 // the crowd when it records a frame.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -59,6 +60,15 @@ struct CharacterState {
     float phase;                     // normalized, in cycles
 };
 
+// An animation event a character fired (Crowd::events): event `event` of its model's clip `clip`
+// (Model::eventName, eventTime) at scene time `time`.
+struct Event {
+    std::uint32_t character;
+    std::uint32_t clip;
+    std::uint32_t event;
+    double time;
+};
+
 class Crowd {
 public:
     // Throws Error(InvalidArgument) naming the character whose model or clip does not exist.
@@ -93,6 +103,34 @@ public:
     // only. About 50 ns per joint per core. The renderer's GPU path does the same on the GPU.
     void computePalettes(double time, std::vector<float>& rows, bool allCores = true) const;
     std::uint64_t paletteJoints() const;
+
+    // Joint `joint` (Model::findJoint) of `character` in world space at `time` seconds, on the CPU,
+    // for game logic (aim, hit tests, a camera that follows a hand). Writes 12 floats to `out`: the
+    // three rows of the 3x4 matrix [R*s | t], row-major as computePalettes' rows but without the
+    // inverse bind (a palette row is this times the joint's inverse bind matrix). Its last column
+    // is the joint's position; the rest its rotation times the character's scale.
+    // Exact with what the renderer draws: the same motion, sampling, blending and hierarchy as the
+    // CPU palettes (which the GPU path matches). Times: after advanceTo(t), any time from the start
+    // of the segment before each character's current one (one replan back) on; a later time than t
+    // follows the current plan (which a later advanceTo may replace). Throws Error(InvalidArgument)
+    // for a character or joint that does not exist, or a time before what the crowd still knows.
+    // Cost: one character's whole skeleton (about 50 ns a joint), allocation-free once warm. Not to
+    // be called while another thread advances the crowd or computes palettes.
+    void jointWorld(std::uint32_t character, std::uint32_t joint, double time, float out[12]) const;
+
+    // The animation events (Model::eventCount) that `count` characters fire at times t with
+    // from < t <= to, on the CPU: `out` is cleared and filled, by character in the order given, each
+    // character's in time order. An event fires each time the character's phase passes its point in
+    // the clip's cycle; its time is solved from the closed-form motion (rate changes, crossfades and
+    // replans included), so a window gives the same events in one call as split over frames. In a
+    // crossfade an event fires from the clip of the larger weight only (the clip faded to from half
+    // way on). The window obeys jointWorld's times: ask for each frame's (previous time, time] after
+    // advanceTo(time); a window reaching back before a character's previous segment throws
+    // Error(InvalidArgument), as does a character that does not exist. Cost: about 100 ns a
+    // character for a frame's window (docs/events.md), calling thread only; safe to call from
+    // several threads at once (it changes nothing).
+    void events(const std::uint32_t* characters, std::size_t count, double from, double to,
+                std::vector<Event>& out) const;
 
     // The ground the crowd stands on: centre (x, y, z) and radius in metres; its tallest model's height.
     void bounds(float center[3], float& radius, float& tallest) const;

@@ -48,6 +48,8 @@ crowdgpu_result crowdgpu_model_load_gltf(const char* path, const char* asset_roo
 /* The clip of this name, or -1. */
 int32_t crowdgpu_model_find_clip(crowdgpu_model model, const char* name);
 uint32_t crowdgpu_model_clip_count(crowdgpu_model model);
+/* The joint of this name (the soldier's "hand_r", a glTF node's name), or -1. */
+int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name);
 void crowdgpu_model_destroy(crowdgpu_model model);
 
 /* ---- Crowds (Vulkan-free) ---- */
@@ -73,6 +75,11 @@ crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, in
  * doubles: a crowd is as exact at 1e9 s as at 0 s. */
 crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time);
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
+/* Joint `joint` of `character` in world space at `time`: 12 floats, the rows of a 3x4 matrix, its
+ * last column the joint's position (crowdgpu::Crowd::jointWorld: exact with what the renderer draws;
+ * times from one replan back on). About 50 ns a joint of the character's model. */
+crowdgpu_result crowdgpu_crowd_joint_world(crowdgpu_crowd crowd, uint32_t character, uint32_t joint, double time,
+                                           float out[12]);
 void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest);
 void crowdgpu_crowd_destroy(crowdgpu_crowd crowd);
 

@@ -42,6 +42,19 @@ public:
     std::int32_t findClip(const std::string& name) const;
     // The clip a character plays when none is named: "walk" when the model has one, else the first.
     std::uint32_t defaultClip() const;
+    // A clip's animation events (what Crowd::events reports): named moments of its cycle, in time
+    // order. A glTF animation's come from its extras: "extras": {"events": [{"name": "shot",
+    // "time": 0.4}, ...]}, times in seconds within [0, the clip's duration] (docs/events.md). The
+    // built-in models' clips have none yet (footsteps are not done). Throw Error(InvalidArgument) for
+    // a clip or event that does not exist. Cost: an index.
+    std::uint32_t eventCount(std::uint32_t clip) const;
+    const std::string& eventName(std::uint32_t clip, std::uint32_t event) const;
+    float eventTime(std::uint32_t clip, std::uint32_t event) const;  // seconds into the cycle
+    // The joint of this name (glTF: its node's name; the soldier's "hand_r", "foot_l", ...), or -1.
+    // Cost: a scan of the joint names.
+    std::int32_t findJoint(const std::string& name) const;
+    // Joint `joint`'s name; throws Error(InvalidArgument) past jointCount().
+    const std::string& jointName(std::uint32_t joint) const;
 
     // The full-detail mesh's triangles: three vertex indices each, into pose()'s vertices.
     const std::vector<std::uint32_t>& indices() const;

@@ -22,10 +22,18 @@ struct Channel {
     std::vector<glm::vec4> values;
 };
 
+// A named moment of a clip's cycle (a footstep, a shot): the crowd reports it each time a character's
+// phase passes it (crowd::Crowd::events).
+struct ClipEvent {
+    std::string name;
+    float time = 0.0f;  // seconds into the cycle, [0, duration]
+};
+
 struct Clip {
     std::string name;
     float duration = 0.0f;  // seconds; clips loop over [0, duration)
     std::vector<Channel> channels;
+    std::vector<ClipEvent> events;  // in time order
 };
 
 }  // namespace anim

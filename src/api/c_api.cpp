@@ -95,6 +95,10 @@ int32_t crowdgpu_model_find_clip(crowdgpu_model model, const char* name) {
     return model && name ? model->model.findClip(name) : -1;
 }
 
+int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name) {
+    return model && name ? model->model.findJoint(name) : -1;
+}
+
 uint32_t crowdgpu_model_clip_count(crowdgpu_model model) { return model ? model->model.clipCount() : 0; }
 void crowdgpu_model_destroy(crowdgpu_model model) { delete model; }
 
@@ -140,6 +144,12 @@ crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, in
 crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time) {
     if (!crowd) return invalid("crowdgpu_crowd_advance_to: crowd is NULL");
     return guarded([&] { crowd->crowd.advanceTo(time); });
+}
+
+crowdgpu_result crowdgpu_crowd_joint_world(crowdgpu_crowd crowd, uint32_t character, uint32_t joint, double time,
+                                           float out[12]) {
+    if (!crowd || !out) return invalid("crowdgpu_crowd_joint_world: crowd or out is NULL");
+    return guarded([&] { crowd->crowd.jointWorld(character, joint, time, out); });
 }
 
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd) { return crowd ? crowd->crowd.size() : 0; }

@@ -1,6 +1,8 @@
 // crowdgpu::Crowd over crowd::Crowd: conversions of the public value types, and errors.
 #include "crowdgpu/crowd.hpp"
 
+#include <cstring>
+
 #include "api/api_data.h"
 #include "crowd/host_memory.h"
 #include "crowd/worker_pool.h"
@@ -128,6 +130,28 @@ void Crowd::computePalettes(double time, std::vector<float>& rows, bool allCores
         const std::span<gpu::BoneRows> bones(reinterpret_cast<gpu::BoneRows*>(rows.data()), joints);
         static crowd::WorkerPool callingThread(1);  // no workers: the caller does every chunk
         crowd.animate(time, bones, offsets, {}, allCores ? &crowd::WorkerPool::shared() : &callingThread);
+    });
+}
+
+void Crowd::jointWorld(std::uint32_t character, std::uint32_t joint, double time, float out[12]) const {
+    detail::translated([&] {
+        const gpu::BoneRows rows = data_->crowd().jointWorld(character, joint, time);
+        static_assert(sizeof(gpu::BoneRows) == 12 * sizeof(float));
+        std::memcpy(out, &rows, sizeof rows);
+    });
+}
+
+void Crowd::events(const std::uint32_t* characters, std::size_t count, double from, double to,
+                   std::vector<Event>& out) const {
+    detail::translated([&] {
+        if (count > 0 && characters == nullptr) throw Error(ErrorCode::InvalidArgument, "events: no character list");
+        if (!(to >= from)) throw Error(ErrorCode::InvalidArgument, "events: the window ends before it starts");
+        thread_local std::vector<crowd::FiredEvent> fired;
+        fired.clear();
+        data_->crowd().events({characters, count}, from, to, fired);
+        out.clear();
+        out.reserve(fired.size());
+        for (const crowd::FiredEvent& e : fired) out.push_back({e.character, e.clip, e.event, e.time});
     });
 }
 

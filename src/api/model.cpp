@@ -82,6 +82,36 @@ float Model::clipDuration(std::uint32_t clip) const {
 }
 
 std::int32_t Model::findClip(const std::string& clipName) const { return data_->model.findClip(clipName); }
+std::uint32_t Model::eventCount(std::uint32_t clip) const {
+    clipName(clip);  // checks the index
+    return static_cast<std::uint32_t>(data_->model.clips[clip].events.size());
+}
+
+const std::string& Model::eventName(std::uint32_t clip, std::uint32_t event) const {
+    if (event >= eventCount(clip))
+        throw Error(ErrorCode::InvalidArgument, name() + ": clip '" + clipName(clip) + "' has no event " + std::to_string(event));
+    return data_->model.clips[clip].events[event].name;
+}
+
+float Model::eventTime(std::uint32_t clip, std::uint32_t event) const {
+    eventName(clip, event);  // checks the indices
+    return data_->model.clips[clip].events[event].time;
+}
+
+std::int32_t Model::findJoint(const std::string& jointName) const {
+    const std::vector<std::string>& names = data_->model.skeleton.jointNames;
+    for (std::size_t j = 0; j < names.size(); ++j)
+        if (names[j] == jointName) return static_cast<std::int32_t>(j);
+    return -1;
+}
+
+const std::string& Model::jointName(std::uint32_t joint) const {
+    if (joint >= data_->model.skeleton.jointNames.size())
+        throw Error(ErrorCode::InvalidArgument, name() + ": no joint " + std::to_string(joint) + " (it has " +
+                                                    std::to_string(jointCount()) + ")");
+    return data_->model.skeleton.jointNames[joint];
+}
+
 const std::vector<std::string>& Model::notes() const { return data_->notes; }
 std::uint32_t Model::defaultClip() const { return crowd::defaultClip(data_->model); }
 const std::vector<std::uint32_t>& Model::indices() const { return data_->model.indices; }

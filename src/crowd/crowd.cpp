@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <string>
@@ -141,6 +142,8 @@ void Crowd::addCharacter(const Character& c) {
                         exactCyclesPerSecond(library_, c.model, c.clip, c.speed)};
     agents_.emplace_back();
     plans_.push_back(startBehaviour(agents_.back(), first, planContext(index)));
+    previous_.push_back(plans_.back());
+    knownFrom_.push_back(-std::numeric_limits<double>::infinity());
     seal(plans_.back(), library_, c.model);
     segments_.push_back(recordFrom(plans_.back(), epoch_, library_, c.model));
     changed_.push_back(0u);
@@ -172,11 +175,29 @@ std::uint32_t Crowd::replan(std::uint32_t character, double time) {
         changed_[character] = 1u;
         ++planned;
     };
-    // Past the episode under way: straight to the one holding `time`, not through every one between.
-    if (skipTo(agent, time, context, plans_[character])) changed();
-    while (agent.due <= time) {
-        plans_[character] = planNext(agent, plans_[character], context);
+    // Past the episode under way: straight to the one holding `time`, not through every one between
+    // (what lies between is not known exactly: queries start at the new plan).
+    const Segment before = plans_[character];
+    const double beforeDue = agent.due, beforeEnd = agent.episodeEnd;
+    if (skipTo(agent, time, context, plans_[character])) {
         changed();
+        // The plan it replaced held up to the new one's start when neither its own end nor its
+        // episode's came first (the next episode, entered as a frame reaches it); else the skipped
+        // stretch is not known exactly.
+        const double start = plans_[character].start;
+        if (beforeDue >= start && beforeEnd >= start && before.start < start) {
+            previous_[character] = before;
+            knownFrom_[character] = before.start;
+        } else {
+            knownFrom_[character] = start;
+        }
+    }
+    while (agent.due <= time) {
+        Segment next = planNext(agent, plans_[character], context);
+        previous_[character] = std::move(plans_[character]);
+        plans_[character] = std::move(next);
+        changed();
+        knownFrom_[character] = previous_[character].start;
     }
     return planned;
 }
@@ -205,6 +226,8 @@ void Crowd::advanceTo(double time) {
         std::vector<Character> characters = std::move(characters_);
         characters_.clear();
         plans_.clear();
+        previous_.clear();
+        knownFrom_.clear();
         segments_.clear();
         agents_.clear();
         cursors_.clear();
@@ -304,6 +327,50 @@ MotionState Crowd::stateAt(std::uint32_t index, double time) const {
     return evaluateMotion(segments_[index], static_cast<float>(time - epoch_), library_, characters_[index].model);
 }
 
+MotionState Crowd::stateKnown(std::uint32_t index, double time) const {
+    checkCharacter(index);
+    if (!(time >= knownFrom_[index]))
+        throw gpu::Error("character " + std::to_string(index) + ": time " + std::to_string(time) +
+                         " s is before " + std::to_string(knownFrom_[index]) +
+                         " s, the earliest its plans still hold (query each frame's window as you advance)");
+    const std::uint32_t model = characters_[index].model;
+    if (time >= plans_[index].start || std::isinf(knownFrom_[index])) return stateAt(index, time);
+    return evaluateMotion(recordFrom(previous_[index], epoch_, library_, model), static_cast<float>(time - epoch_),
+                          library_, model);
+}
+
+anim::Affine Crowd::jointWorld(std::uint32_t index, std::uint32_t joint, double time) const {
+    checkCharacter(index);
+    const std::uint32_t joints = library_.jointCount(characters_[index].model);
+    if (joint >= joints)
+        throw gpu::Error("character " + std::to_string(index) + ": " + modelOf(index).name + " has no joint " +
+                         std::to_string(joint) + " (it has " + std::to_string(joints) + ")");
+    thread_local std::vector<gpu::BoneRows> palette;
+    thread_local std::vector<anim::Affine> world;
+    palette.resize(joints);
+    world.resize(joints);
+    animateState(index, stateKnown(index, time), palette, world);
+    return world[joint];
+}
+
+void Crowd::events(std::span<const std::uint32_t> characters, double from, double to,
+                   std::vector<FiredEvent>& out) const {
+    for (const std::uint32_t c : characters) {
+        checkCharacter(c);
+        if (!(from >= knownFrom_[c]))
+            throw gpu::Error("character " + std::to_string(c) + ": events from " + std::to_string(from) +
+                             " s asked, but its plans hold from " + std::to_string(knownFrom_[c]) +
+                             " s on (ask for each frame's window as you advance)");
+        const std::uint32_t model = characters_[c].model;
+        const Segment& current = plans_[c];
+        const bool previous = !std::isinf(knownFrom_[c]) && knownFrom_[c] < current.start;
+        if (previous)
+            segmentEvents(previous_[c], *models_[model], library_, model, c, knownFrom_[c], current.start, from, to, out);
+        segmentEvents(current, *models_[model], library_, model, c, current.start,
+                      std::numeric_limits<double>::infinity(), from, to, out);
+    }
+}
+
 void Crowd::poseRecord(std::uint32_t index, double time, gpu::CharacterRecord& record) const {
     writePose(stateAt(index, time), record);
 }
@@ -318,7 +385,8 @@ void Crowd::animateCharacter(std::uint32_t index, double time, std::span<gpu::Bo
     animateState(index, stateAt(index, time), out);
 }
 
-void Crowd::animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out) const {
+void Crowd::animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out,
+                         std::span<anim::Affine> world) const {
     const Character& c = characters_[index];
     const std::uint32_t joints = library_.jointCount(c.model);
     // Per-thread scratch, reused by the pool's long-lived threads: once warm, animation allocates nothing.
@@ -343,7 +411,8 @@ void Crowd::animateState(std::uint32_t index, const MotionState& state, std::spa
         }
     }
     const anim::Affine placement = anim::placementAffine(state.position, state.heading, c.scale);
-    anim::PaletteJob{&library_, c.model, placement, to, modelSpace, out.first(joints)}.run();
+    anim::PaletteJob{&library_, c.model, placement, to, world.empty() ? std::span<anim::Affine>(modelSpace) : world,
+                     out.first(joints)}.run();
 }
 
 void Crowd::animate(double time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,

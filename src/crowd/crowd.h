@@ -14,8 +14,10 @@
 
 #include <glm/glm.hpp>
 
+#include "anim/affine.h"
 #include "anim/clip_library.h"
 #include "crowd/behaviours.h"
+#include "crowd/events.h"
 #include "crowd/gaits.h"
 #include "crowd/motion.h"
 #include "crowd/rhythm.h"
@@ -124,6 +126,18 @@ public:
     // Where character `index` is and what it plays at `time` (within its planned segment), evaluated
     // as the GPU does: its record at (float)(time - epoch()).
     MotionState stateAt(std::uint32_t index, double time) const;
+    // The same at any time the crowd still knows exactly: the current segment (bit for bit what
+    // stateAt gives, and what the GPU draws), or before its start the segment it replaced (evaluated
+    // on today's epoch: equal to what was drawn then up to float rounding). Before the first plan's
+    // start a character stands at that start, as drawn. Throws gpu::Error for a time before knownFrom().
+    MotionState stateKnown(std::uint32_t index, double time) const;
+    // The earliest time stateKnown answers for `index`: -infinity while its first plan holds, else the
+    // start of the segment before its current one (one replan back), or the current one's start when
+    // advanceTo skipped whole episodes to reach it.
+    double knownFrom(std::uint32_t index) const { return knownFrom_[index]; }
+    // The segment `index` followed before its current one (valid when knownFrom() is finite and before
+    // plans()[index].start).
+    const Segment& previousPlan(std::uint32_t index) const { return previous_[index]; }
 
     // ---- The CPU animation path (the reference) ----
     // Writes the skinning matrices of every character at `time` (seconds): character c's joint j goes
@@ -135,6 +149,15 @@ public:
     void animateCharacter(std::uint32_t index, double time, std::span<gpu::BoneRows> out) const;
     // A record's motion fields (placement, clips, phase) at `time`.
     void poseRecord(std::uint32_t index, double time, gpu::CharacterRecord& record) const;
+    // Joint `joint` of character `index` in world space at `time` (stateKnown's times): the palette
+    // job's world transform before the inverse bind, placement * root * local[root] * ... * local[joint].
+    // Costs one character's sampling, blending and hierarchy (every joint: the hierarchy is one sweep).
+    anim::Affine jointWorld(std::uint32_t index, std::uint32_t joint, double time) const;
+    // The clip events (crowd/events.h) the given characters fire at times t with from < t <= to,
+    // appended to `out`: by character in the order given, each in time order. The window must lie
+    // within what the crowd knows (from >= knownFrom(c)); times after the last advanceTo follow the
+    // current plans. Throws gpu::Error for a character that does not exist or a window it forgot.
+    void events(std::span<const std::uint32_t> characters, double from, double to, std::vector<FiredEvent>& out) const;
 
     // Centre and radius of the ground the crowd stands on (and may walk over), and its tallest model's height.
     glm::vec3 center() const;
@@ -149,7 +172,9 @@ private:
     double wakeOf(std::uint32_t character) const;
     // Restates the records of lastChanged_ relative to epoch_.
     void restateRecords();
-    void animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out) const;
+    // `world` (one per joint, optional) receives the joints' world transforms.
+    void animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out,
+                      std::span<anim::Affine> world = {}) const;
     static void writePose(const MotionState& state, gpu::CharacterRecord& record);
     void checkCharacter(std::uint32_t character) const;
     void command(std::uint32_t character, double at);
@@ -162,6 +187,11 @@ private:
     std::vector<Rhythm> rhythms_;
     BehaviourSettings behaviour_;
     std::vector<Segment> plans_;
+    // One replan back: the segment each character followed before plans_ (for queries of the recent
+    // past: events in a frame's window, joints at a time just before a replan), and from when the crowd
+    // knows each character's motion exactly (Crowd::knownFrom).
+    std::vector<Segment> previous_;
+    std::vector<double> knownFrom_;
     std::vector<gpu::MotionRecord> segments_;  // plans_ relative to epoch_
     std::vector<Agent> agents_;
     double plannedTo_ = 0.0;

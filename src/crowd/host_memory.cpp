@@ -16,8 +16,10 @@ std::uint64_t estimateHostBytes(std::span<const model::SkinnedModel* const> mode
                                 bool cpuPalettes) {
     std::uint64_t joints = 1;
     for (const model::SkinnedModel* m : models) joints = std::max<std::uint64_t>(joints, m->skeleton.jointCount());
-    // Crowd: character, agent, plan and its record, changed flags and lists, cursor offset, 6 key cursors a joint.
-    const std::uint64_t crowdState = sizeof(Character) + sizeof(Agent) + sizeof(Segment) + sizeof(gpu::MotionRecord) + 1 + 4 + 8 +
+    // Crowd: character, agent, plan, the plan before it and from when it holds, the plan's record,
+    // changed flags and lists, cursor offset, 6 key cursors a joint.
+    const std::uint64_t crowdState = sizeof(Character) + sizeof(Agent) + 2 * sizeof(Segment) + sizeof(double) +
+                                     sizeof(gpu::MotionRecord) + 1 + 4 + 8 +
                                      6 * sizeof(std::uint16_t) * joints;
     const std::uint64_t renderer = sizeof(gpu::CharacterRecord) + 2 * sizeof(std::uint32_t);
     const std::uint64_t palettes = cpuPalettes ? joints * sizeof(gpu::BoneRows) : 0;

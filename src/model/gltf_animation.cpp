@@ -110,6 +110,32 @@ void checkPoseReach(const anim::Skeleton& skeleton, const anim::Clip& clip, std:
          " of joint '" + skeleton.jointNames[channel.joint] + "'): its keys " + beyond);
 }
 
+// The clip's events from the animation's extras (documented in crowdgpu/model.hpp):
+//   "extras": {"events": [{"name": "footstep.left", "time": 0.25}, ...]}
+// Anything else in extras is the file's own business; a malformed "events" fails naming the field.
+std::vector<anim::ClipEvent> readEvents(const tinygltf::Animation& animation, std::size_t a, float duration) {
+    std::vector<anim::ClipEvent> events;
+    if (!animation.extras.IsObject() || !animation.extras.Has("events")) return events;
+    const std::string field = "animations[" + std::to_string(a) + "].extras.events";
+    const tinygltf::Value& list = animation.extras.Get("events");
+    if (!list.IsArray()) fail(field + ": expected an array of {\"name\": string, \"time\": seconds}");
+    for (std::size_t e = 0; e < list.ArrayLen(); ++e) {
+        const std::string at = field + "[" + std::to_string(e) + "]";
+        const tinygltf::Value& event = list.Get(static_cast<int>(e));
+        if (!event.IsObject()) fail(at + ": expected an object {\"name\": string, \"time\": seconds}");
+        if (!event.Has("name") || !event.Get("name").IsString() || event.Get("name").Get<std::string>().empty())
+            fail(at + ".name: expected a non-empty string");
+        if (!event.Has("time") || !event.Get("time").IsNumber()) fail(at + ".time: expected a number of seconds");
+        const double time = event.Get("time").GetNumberAsDouble();
+        if (!(time >= 0.0 && time <= static_cast<double>(duration)))
+            fail(at + ".time: " + std::to_string(time) + " s is outside the clip (0 to " + std::to_string(duration) + " s)");
+        events.push_back({event.Get("name").Get<std::string>(), static_cast<float>(time)});
+    }
+    std::stable_sort(events.begin(), events.end(),
+                     [](const anim::ClipEvent& x, const anim::ClipEvent& y) { return x.time < y.time; });
+    return events;
+}
+
 }  // namespace
 
 std::vector<bool> animatedNodes(const tinygltf::Model& model) {
@@ -162,6 +188,7 @@ std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const SkeletonBu
             sourceChannels.push_back(c);
         }
         checkPoseReach(skeleton.skeleton, clip, a, sourceChannels, maxBindDistance);
+        clip.events = readEvents(animation, a, clip.duration);
         clips.push_back(std::move(clip));
     }
     if (ignored > 0)

@@ -1,0 +1,33 @@
+#pragma once
+// Animation events of the crowd: when a character's phase passes a clip event's point in the cycle
+// (anim::ClipEvent), the event fires. The phase is closed form (crowd/motion.h), so each firing time is
+// solved from the segment, not found by stepping frames: a window (from, to] gets the same events in one
+// call as in any number of calls that split it.
+//
+// Crossfades: both clips sit at the same point of their cycles, so both clips' events could fire; an
+// event fires from the clip of the larger blend weight at its moment only (the clip faded to from half
+// way on), so a walk -> run gives one footstep per foot, not two.
+#include <cstdint>
+#include <vector>
+
+#include "anim/clip_library.h"
+#include "crowd/segment.h"
+#include "model/skinned_model.h"
+
+namespace crowd {
+
+struct FiredEvent {
+    std::uint32_t character = 0;
+    std::uint32_t clip = 0;   // the model's clip
+    std::uint32_t event = 0;  // index into that clip's events
+    double time = 0.0;        // scene seconds
+};
+
+// Appends to `out` the events `character` fires while following `segment` (of `model`, the library's
+// model `modelIndex`) at times t with from < t <= to and begin <= t < end (the part of the scene clock
+// the segment covers). In time order.
+void segmentEvents(const Segment& segment, const model::SkinnedModel& model, const anim::ClipLibrary& library,
+                   std::uint32_t modelIndex, std::uint32_t character, double begin, double end, double from,
+                   double to, std::vector<FiredEvent>& out);
+
+}  // namespace crowd
