@@ -1,10 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // An impostor's quad in the shadow map (depth only): the atlas texels the colour pass keeps (at least
-// half coverage) cast, the rest do not. The coverage is blended over the same four cells as the colour
-// pass's (impostor_sample.glsl.inc), so the shadow of a turning or walking character morphs with it
-// rather than jumping a view or a frame on the ground; an alpha fetch costs little next to the quad's
-// vertices, which bound this pass as they bound the colour pass.
+// half coverage) cast, the rest do not. The coverage is blended between the two nearest frames at the
+// nearer azimuth (impostorShadowCoverage, impostor_sample.glsl.inc), so a walking character's shadow
+// morphs with it rather than jumping a frame on the ground.
 #include "gpu_types.h"
 #include "impostor_sample.glsl.inc"
 
@@ -21,5 +20,5 @@ layout(location = 6) flat in vec2 vWeights;
 layout(location = 7) flat in uvec2 vGrid;
 
 void main() {
-    if (impostorBlendedTexel(atlasAlbedo, vCells, vWeights, vGrid, vLocal).a < 0.5) discard;
+    if (impostorShadowCoverage(atlasAlbedo, vCells, vWeights, vGrid, vLocal) < 0.5) discard;
 }
