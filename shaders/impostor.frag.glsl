@@ -1,14 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// An impostor's pixel: the atlas's albedo and model-space normal (coverage-weighted, so divided by
-// coverage), the normal turned by the heading, and the same lighting as the mesh (shade()), so the
+// An impostor's pixel: the atlas's albedo and model-space normal blended over four cells
+// (impostor_sample.glsl.inc; coverage-weighted, so divided by the blended coverage), the normal turned by the heading, and the same lighting as the mesh (shade()), so the
 // switch from mesh to impostor keeps the character's brightness. Single-sampled, texels under half
 // coverage are cut; multisampled, the coverage goes out as alpha and the pipeline's alpha to coverage
-// turns it into the share of the pixel's samples the impostor covers.
+// turns it into the share of the pixel's samples the impostor covers. Either way the coverage is the
+// blended one, the same the shadow pass cuts at half.
 // Its shadow is looked up a pose-sphere radius nearer the light: the quad stands in for a body as deep as
 // that sphere, and its own shadow (a quad facing the light through the sphere's centre) must not fall on it.
 #include "gpu_types.h"
 #include "shading.glsl.inc"
+#include "impostor_sample.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(set = 2, binding = 0) uniform sampler2DArray atlasAlbedo;
@@ -16,19 +18,20 @@ layout(set = 2, binding = 1) uniform sampler2DArray atlasNormal;
 layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(constant_id = 0) const bool kAlphaToCoverage = false;
 
-layout(location = 0) in vec2 vUv;
-layout(location = 1) flat in uint vLayer;
+layout(location = 0) in vec2 vLocal;
+layout(location = 1) flat in uvec4 vCells;
 layout(location = 2) flat in vec3 vTint;
 layout(location = 3) flat in vec2 vHeading;
 layout(location = 4) in vec3 vWorld;
 layout(location = 5) flat in float vRadius;
+layout(location = 6) flat in vec2 vWeights;
+layout(location = 7) flat in uvec2 vGrid;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec3 at = vec3(vUv, float(vLayer));
-    vec4 albedo = texture(atlasAlbedo, at);
+    vec4 albedo = impostorBlendedTexel(atlasAlbedo, vCells, vWeights, vGrid, vLocal);
     if (albedo.a < (kAlphaToCoverage ? 1.0 / 255.0 : 0.5)) discard;  // (nothing covered: no depth either)
-    vec4 packed = texture(atlasNormal, at);
+    vec4 packed = impostorBlendedTexel(atlasNormal, vCells, vWeights, vGrid, vLocal);
     vec3 n = packed.rgb / packed.a * 2.0 - 1.0;
     float c = vHeading.x, s = vHeading.y;
     vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);

@@ -3,7 +3,8 @@
 // The impostor level: four vertices per character of the impostor list (vertex v is corner v % 4 of
 // impostor v / 4; indexed quads share them, and the draw's cost follows the vertices), a quad facing
 // the eye (spherical billboard over the model's pose sphere, turned by the character's heading) that
-// shows the atlas cell of its clip, phase and view direction. No bones, no skinned vertices: only the
+// shows the atlas cells of its clip, phase and view direction, blended (impostorBlend: the fragment
+// shader mixes the four cells, so it gets the cells, their weights and the place in a cell). No bones, no skinned vertices: only the
 // record. The shadow pass draws the same quads facing the light (SHADOW_PASS, with the light's scene set):
 // for an orthographic light, the atlas cell seen from the light's direction is the character's
 // silhouette as the light sees it, at the pose the colour pass shows.
@@ -16,12 +17,14 @@ layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(constant_id = 0) const bool SHADOW_PASS = false;
 
-layout(location = 0) out vec2 vUv;
-layout(location = 1) flat out uint vLayer;
+layout(location = 0) out vec2 vLocal;        // the place in a cell, [0, 1]^2 over the quad
+layout(location = 1) flat out uvec4 vCells;   // impostorBlend's four cells
 layout(location = 2) flat out vec3 vTint;
 layout(location = 3) flat out vec2 vHeading;  // cos, sin
 layout(location = 4) out vec3 vWorld;
 layout(location = 5) flat out float vRadius;
+layout(location = 6) flat out vec2 vWeights;  // impostorBlend's weights
+layout(location = 7) flat out uvec2 vGrid;    // cells per atlas row, per layer
 
 // Model frame to world: the heading's turn about +y (as worldSphere and characterTransform turn it).
 vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.z - s * v.x); }
@@ -39,16 +42,16 @@ void main() {
     vec3 towards = SHADOW_PASS ? scene.lightDirection.xyz : normalize(cameraPosition.xyz - centre);
     vec3 towardsModel = vec3(c * towards.x - s * towards.z, towards.y, c * towards.z + s * towards.x);
     ImpostorPose pose = impostorPose(character);
-    uint cell = impostorCell(m, pose.clip, pose.phase, towardsModel);
+    ImpostorBlend blend = impostorBlend(m, pose.clip, pose.phase, towardsModel);
     vec3 right, up;
     impostorBasis(towardsModel, right, up);
 
     vec3 world = centre + m.square.w * scale * (corner.x * turn(right, c, s) + corner.y * turn(up, c, s));
     gl_Position = scene.viewProjection * vec4(world, 1.0);
-    uint inLayer = cell % m.views.w;
-    vec2 cellOrigin = vec2(inLayer % m.views.z, inLayer / m.views.z);
-    vUv = (cellOrigin + vec2(0.5 + 0.5 * corner.x, 0.5 - 0.5 * corner.y)) / float(m.views.z);
-    vLayer = cell / m.views.w;
+    vLocal = vec2(0.5 + 0.5 * corner.x, 0.5 - 0.5 * corner.y);
+    vCells = blend.cells;
+    vWeights = blend.weights;
+    vGrid = m.views.zw;
     vTint = character.tint.rgb;
     vHeading = vec2(c, s);
     vWorld = world;

@@ -53,6 +53,35 @@ TEST(ImpostorCell, FollowsViewDirectionAndAnimationTimeAsDocumented) {
     EXPECT_EQ(render::impostorCell(m, 0, 0.0f, direction(180, -10)), 100u + 8);
 }
 
+// The four cells an impostor blends: the azimuths either side of 95 degrees (steps 4 and 5, 90 and
+// 112.5 degrees: 5/22.5 of the way to 5) and the frames either side of phase 0.3 (frames 4 and 5:
+// 0.8 of the way to 5), both wrapping past the last step; the largest weight is the nearest cell's.
+TEST(ImpostorCell, BlendsTheTwoNearestViewsAndFrames) {
+    const gpu::ImpostorModel m = handModel();
+    auto cell = [](std::uint32_t clip, std::uint32_t frame, std::uint32_t band, std::uint32_t azimuth) {
+        return 100u + ((clip * 16 + frame) * 4 + band) * 16 + azimuth;
+    };
+    const render::ImpostorBlend b = render::impostorBlend(m, 1, 0.3f, direction(95, 40));
+    EXPECT_EQ(b.cells[0], cell(1, 4, 1, 4));
+    EXPECT_EQ(b.cells[1], cell(1, 4, 1, 5));
+    EXPECT_EQ(b.cells[2], cell(1, 5, 1, 4));
+    EXPECT_EQ(b.cells[3], cell(1, 5, 1, 5));
+    EXPECT_NEAR(b.weights.x, 5.0f / 22.5f, 1e-4f);
+    EXPECT_NEAR(b.weights.y, 0.8f, 1e-4f);
+    EXPECT_NEAR(b.weight(0) + b.weight(1) + b.weight(2) + b.weight(3), 1.0f, 1e-6f);
+    const render::ImpostorBlend wrapped = render::impostorBlend(m, 2, 0.98f, direction(350, 10));
+    EXPECT_EQ(wrapped.cells[0], cell(2, 15, 0, 15));
+    EXPECT_EQ(wrapped.cells[3], cell(2, 0, 0, 0));
+    for (const float azimuth : {3.0f, 95.0f, 118.0f, 200.0f, 359.0f})
+        for (const float phase : {0.0f, 0.3f, 0.36f, 0.98f}) {
+            const render::ImpostorBlend blend = render::impostorBlend(m, 1, phase, direction(azimuth, 40));
+            std::uint32_t heaviest = 0;
+            for (std::uint32_t i = 1; i < 4; ++i) heaviest = blend.weight(i) > blend.weight(heaviest) ? i : heaviest;
+            EXPECT_EQ(blend.cells[heaviest], render::impostorCell(m, 1, phase, direction(azimuth, 40)))
+                << azimuth << " degrees, phase " << phase;
+        }
+}
+
 TEST(ImpostorCell, ThePoseIsTheDominantClipAtTheSharedPhase) {
     gpu::CharacterRecord c{};
     c.ids.w = 1u | (2u << 16);  // fading from clip 1 to clip 2
@@ -203,9 +232,10 @@ TEST_F(GpuTest, ImpostorMatchesTheMeshAtTheSwitchSize) {
     }
 }
 
-// One impostor through the animation: two times whose phases round to the same frame give the same
-// picture, pixel for pixel; a time a frame later gives another (walk: 1.1 s, 16 frames, so frame 4
-// holds phases 0.219 to 0.281).
+// One impostor through the animation (walk: 1.1 s, 16 frames, frame 4 at phase 0.25, frame 5 at
+// 0.3125): a frame later the picture is another; between two frames it is a blend of both, so it
+// differs from each, and a quarter of the way it is nearer the first frame's picture than the next
+// frame's is (a nearest-frame impostor showed frame 4 unchanged up to phase 0.281).
 TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     std::vector<crowd::Character> one = {row(soldier, 1.0f)[0]};
@@ -228,9 +258,18 @@ TEST_F(GpuTest, ImpostorFollowsItsAnimationFrameByFrame) {
         EXPECT_EQ(renderer.takeStats().back().lods.impostors, 1u);
         return renderer.readback();
     };
-    const app::Rgba8Image early = picture(0.23f), late = picture(0.27f), next = picture(0.33f);
-    EXPECT_EQ(early.pixels, late.pixels);
-    EXPECT_LT(test::fractionOfMatchingPixels(early, next, 0), 0.995);
+    auto change = [](const app::Rgba8Image& a, const app::Rgba8Image& b) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        return sum;
+    };
+    const app::Rgba8Image frame4 = picture(0.25f), between = picture(0.2656f), frame5 = picture(0.3125f);
+    std::printf("change from frame 4: a quarter frame on %.0f, a frame on %.0f (sum of levels)\n",
+                change(frame4, between), change(frame4, frame5));
+    EXPECT_LT(test::fractionOfMatchingPixels(frame4, frame5, 0), 0.995);
+    EXPECT_LT(test::fractionOfMatchingPixels(frame4, between, 0), 1.0);
+    EXPECT_LT(test::fractionOfMatchingPixels(frame5, between, 0), 1.0);
+    EXPECT_LT(change(frame4, between), 0.6 * change(frame4, frame5));
 }
 
 // A crowd at every level at once (LOD 0, 1, 2 and impostors) against the same frame with impostors off:

@@ -27,6 +27,24 @@ std::uint32_t impostorCell(const gpu::ImpostorModel& m, std::uint32_t clip, floa
     return m.cells.x + (pose * m.views.y + elevation) * m.views.x + azimuth;
 }
 
+ImpostorBlend impostorBlend(const gpu::ImpostorModel& m, std::uint32_t clip, float phase, const glm::vec3& towardsCamera) {
+    const glm::vec2 angles = impostorAngles(towardsCamera);
+    const float a = angles.x / (2.0f * kPi) * static_cast<float>(m.views.x);
+    const float f = phase * static_cast<float>(m.cells.z);
+    const std::uint32_t a0 = static_cast<std::uint32_t>(std::floor(a)) % m.views.x, a1 = (a0 + 1u) % m.views.x;
+    const std::uint32_t f0 = static_cast<std::uint32_t>(std::floor(f)) % m.cells.z, f1 = (f0 + 1u) % m.cells.z;
+    const std::uint32_t elevation =
+        std::min(static_cast<std::uint32_t>(angles.y / (0.5f * kPi) * static_cast<float>(m.views.y)), m.views.y - 1u);
+    const std::uint32_t firstPose = std::min(clip, m.cells.y - 1u) * m.cells.z;
+    auto cell = [&](std::uint32_t frame, std::uint32_t azimuth) {
+        return m.cells.x + ((firstPose + frame) * m.views.y + elevation) * m.views.x + azimuth;
+    };
+    ImpostorBlend blend;
+    blend.cells = {cell(f0, a0), cell(f0, a1), cell(f1, a0), cell(f1, a1)};
+    blend.weights = {a - std::floor(a), f - std::floor(f)};
+    return blend;
+}
+
 glm::vec3 impostorViewDirection(const gpu::ImpostorModel& m, std::uint32_t azimuth, std::uint32_t elevation) {
     const float a = 2.0f * kPi * static_cast<float>(azimuth) / static_cast<float>(m.views.x);
     const float e = 0.5f * kPi * (static_cast<float>(elevation) + 0.5f) / static_cast<float>(m.views.y);

@@ -8,6 +8,11 @@
 // of 90 / elevations degrees, captured at each band's middle (the band holding the direction is
 // shown). Frame k of a clip is captured at phase k / frames, the nearest frame is shown (phases
 // wrap). Cell = first + ((clip x frames + frame) x elevations + elevation) x azimuths + azimuth.
+//
+// Drawn, an impostor blends four cells (impostorBlend): the two azimuths either side of the direction
+// and the two frames either side of the phase, weighted by how near each is, so turning or walking
+// changes the picture smoothly; the nearest of them (the largest weight) is impostorCell's.
+#include <array>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -23,6 +28,19 @@ glm::vec2 impostorAngles(const glm::vec3& towardsCamera);
 // the eye in the model's own frame.
 std::uint32_t impostorCell(const gpu::ImpostorModel& model, std::uint32_t clip, float phase,
                            const glm::vec3& towardsCamera);
+
+// The four cells an impostor blends and their weights: cells[i] is at azimuth step a0 + (i & 1) and
+// frame f0 + (i >> 1) (both wrapping), where a0 and f0 are the steps at or below the direction and the
+// phase; weights.x is the share of the next azimuth, weights.y of the next frame (bilinear).
+struct ImpostorBlend {
+    std::array<std::uint32_t, 4> cells{};
+    glm::vec2 weights{0.0f};
+    float weight(std::uint32_t i) const {
+        return ((i & 1u) ? weights.x : 1.0f - weights.x) * ((i & 2u) ? weights.y : 1.0f - weights.y);
+    }
+};
+ImpostorBlend impostorBlend(const gpu::ImpostorModel& model, std::uint32_t clip, float phase,
+                            const glm::vec3& towardsCamera);
 
 // The direction (towards the viewer) cell view (azimuth index, elevation index) was captured from.
 glm::vec3 impostorViewDirection(const gpu::ImpostorModel& model, std::uint32_t azimuth, std::uint32_t elevation);
