@@ -26,14 +26,6 @@ using test::GpuTest;
 
 constexpr float kDegree = 3.14159265f / 180.0f;
 
-// The mean absolute difference, over RGB, of rows [fromRow, toRow) of two pictures of the same size.
-double meanChange(const app::Rgba8Image& a, const app::Rgba8Image& b, std::uint32_t fromRow, std::uint32_t toRow) {
-    double sum = 0.0;
-    for (std::size_t i = std::size_t{fromRow} * a.width * 4; i < std::size_t{toRow} * a.width * 4; ++i)
-        if (i % 4 != 3) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
-    return sum / (3.0 * (toRow - fromRow) * a.width);
-}
-
 // The pixels a character covers: those its tint changes (a picture at tint 1 against the same at 0.6).
 std::vector<bool> characterMask(const app::Rgba8Image& lit, const app::Rgba8Image& dim) {
     std::vector<bool> mask(std::size_t{lit.width} * lit.height);
