@@ -14,6 +14,7 @@
 # FRAMES (default 300) and WARMUP (30): crowd-bench's --frames and --warmup; COUNT (1000000); SIZE
 # (1920x1080); DEVICE (NVIDIA): part of the device's name, empty for the first device.
 set -uo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
 frames=${FRAMES:-300}
 warmup=${WARMUP:-30}
 count=${COUNT:-1000000}
@@ -24,19 +25,12 @@ res=/tmp/impostor-blend
 out=${OUT:-/tmp/out}
 rm -rf "$res"
 mkdir -p "$res" "$out"
-if [[ -d .gl ]]; then
-  for f in .gl/*.deb; do dpkg -x "$f" /; done
-  ldconfig
-fi
+install_vulkan_loader
 device_flag=()
 [[ -n $device ]] && device_flag=(--device "$device")
 first=$PWD/${bins[0]}
 probe() { LD_LIBRARY_PATH=$first "$first/crowd-bench" "${device_flag[@]}" --counts 1 --frames 1 --warmup 0 --size 64x64 >"$res/probe.txt" 2>&1; }
-if ! probe && [[ -n $device ]]; then
-  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
-  probe || { cat "$res/probe.txt"; echo "run_impostor_blend: no device named like '$device'"; exit 1; }
-fi
-nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem --format=csv >"$res/nvidia-smi.txt" 2>&1
+find_device run_impostor_blend quiet
 failures=0
 for round in 1 2; do
   for b in "${!bins[@]}"; do

@@ -13,6 +13,7 @@
 # the device's name, empty for the first device; SIZE (1920x1080); STRESS_COUNT (100000; lavapipe's
 # 128 MiB storage-buffer range takes 8000 with compute).
 set -uo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
 frames=${FRAMES:-300}
 warmup=${WARMUP:-30}
 device=${DEVICE-NVIDIA}
@@ -23,54 +24,17 @@ res=/tmp/shadows
 out=${OUT:-/tmp/out}
 rm -rf "$res"
 mkdir -p "$res/pictures" "$out"
-if [[ -d .gl ]]; then
-  for f in .gl/*.deb; do dpkg -x "$f" /; done
-  ldconfig
-fi
+install_vulkan_loader
 export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 device_flag=()
 [[ -n $device ]] && device_flag=(--device "$device")
 
 # The programs find the device by name, or the NVIDIA driver is not among the loader's: name its ICD.
 probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
-if ! probe && [[ -n $device ]]; then
-  export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
-  probe || { cat "$res/probe.txt"; echo "run_shadows: no device named like '$device'"; exit 1; }
-fi
-nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem --format=csv >"$res/nvidia-smi.txt" 2>&1
-cat "$res/nvidia-smi.txt"
+find_device run_shadows
 
 failures=0
-# run NAME PROGRAM ARGS...: its output in $res/NAME.txt, its command in commands.txt.
-run() {
-  local name=$1; shift
-  echo "$*" >>"$res/commands.txt"
-  echo "== $name"
-  "$@" >"$res/$name.txt" 2>&1
-  local status=$?
-  if [[ $status != 0 ]]; then
-    failures=$((failures + 1))
-    echo "   failed (exit $status):"; tail -3 "$res/$name.txt"
-  fi
-}
 
-# The value of column $2 in the first data row of the CSV file $1 (quoted fields may hold commas).
-csv_value() {
-  awk -v want="$2" '
-    function fields(line, out,   n, i, c, field, quoted) {
-      n = 0; field = ""; quoted = 0
-      for (i = 1; i <= length(line); i++) {
-        c = substr(line, i, 1)
-        if (c == "\"") quoted = !quoted
-        else if (c == "," && !quoted) { out[++n] = field; field = "" }
-        else field = field c
-      }
-      out[++n] = field
-      return n
-    }
-    NR == 1 { n = fields($0, head); for (i = 1; i <= n; i++) if (head[i] == want) column = i; next }
-    NR == 2 { fields($0, row); if (column) print row[column]; exit }' "$1" 2>/dev/null
-}
 # Percent by which $2 is over $1.
 percent() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b != "") printf "%+.0f%%", 100 * (b - a) / a; else print "-" }'; }
 
