@@ -1,5 +1,6 @@
 // The worker pool visits every index exactly once, for any count and chunk size, many times over.
 #include <atomic>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -26,4 +27,25 @@ TEST(WorkerPool, RunsRepeatedlyWithoutLosingWork) {
             for (std::uint32_t i = begin; i < end; ++i) sum += i;
         });
     EXPECT_EQ(sum.load(), 500u * 4950u);
+}
+
+TEST(WorkerPool, CallersOnSeveralThreadsEachGetAllTheirWork) {
+    // Two crowds advanced on two host threads share WorkerPool::shared(): each call must see every one
+    // of its own indices, and none of the other's.
+    crowd::WorkerPool pool(3);
+    auto caller = [&](std::uint64_t& sum) {
+        for (int round = 0; round < 300; ++round) {
+            std::atomic<std::uint64_t> local{0};
+            pool.parallelFor(1000, 16, [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t i = begin; i < end; ++i) local += i;
+            });
+            sum += local.load();
+        }
+    };
+    std::uint64_t first = 0, second = 0;
+    std::thread other(caller, std::ref(second));
+    caller(first);
+    other.join();
+    EXPECT_EQ(first, 300u * 499500u);
+    EXPECT_EQ(second, 300u * 499500u);
 }

@@ -50,6 +50,7 @@ void WorkerPool::workerLoop() {
 void WorkerPool::parallelFor(std::uint32_t count, std::uint32_t chunk,
                              const std::function<void(std::uint32_t, std::uint32_t)>& work) {
     if (threads_.empty() || count <= chunk) return work(0, count);
+    std::lock_guard caller(callers_);
     {
         std::lock_guard lock(mutex_);
         work_ = &work;

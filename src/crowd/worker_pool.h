@@ -19,7 +19,8 @@ public:
     WorkerPool& operator=(const WorkerPool&) = delete;
 
     // Calls work(begin, end) over [0, count) in chunks of `chunk`, on the workers and the calling
-    // thread, and returns once every chunk is done. Not reentrant.
+    // thread, and returns once every chunk is done. Callers on several threads take turns (the shared
+    // pool serves every crowd a host may advance on its own thread); not reentrant from inside `work`.
     void parallelFor(std::uint32_t count, std::uint32_t chunk,
                      const std::function<void(std::uint32_t, std::uint32_t)>& work);
 
@@ -30,6 +31,7 @@ private:
     void workerLoop();
     void runChunks();
 
+    std::mutex callers_;  // held for a whole parallelFor: one caller's work at a time
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable finished_;
