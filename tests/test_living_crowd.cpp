@@ -20,6 +20,7 @@
 #include "anim/skinning_matrices.h"
 #include "app/crowd_app.h"
 #include "crowd/crowd.h"
+#include "crowd/mill_schedule.h"
 #include "crowd/plan_steps.h"
 #include "gpu/vulkan_error.h"
 #include "model/procedural_models.h"
@@ -200,6 +201,36 @@ TEST(Behaviours, TheSameSeedGivesTheSameCrowdAtAnyFrameRate) {
     jumped.advanceTo(20.0f - kFrame / 2);
     for (std::uint32_t c = 0; c < stepped.size(); ++c)
         EXPECT_EQ(std::memcmp(&stepped.segments()[c], &jumped.segments()[c], sizeof(gpu::MotionRecord)), 0) << c;
+}
+
+// A milling crowd plans its share every second from its start: its characters set off over their first
+// episode, each at its own offset, as later episodes start. (When the whole crowd set off within its
+// first 3 s, those seconds planned 2.5-3 times the steady share: a stall a host saw at every start.)
+TEST(Behaviours, AMillingCrowdPlansItsSteadyShareFromItsStart) {
+    app::SceneOptions scene;
+    scene.model = "soldier";
+    scene.count = 3000;
+    scene.behaviour = crowdgpu::Behaviour::Mill;
+    static const app::CrowdModels models = app::loadModels("soldier", 1);
+    crowdgpu::Crowd built = app::buildCrowd(models, scene);
+    crowd::Crowd& crowd = built.data().crowd();
+    const double episode = crowd::millEpisodeLength(crowd.library(), 0, crowd.gaits(0), crowd.behaviour());
+    // Segments planned in each second of three episodes, at 60 frames a second.
+    const auto seconds = static_cast<std::uint32_t>(3.0 * episode);
+    std::vector<double> perSecond(seconds, 0.0);
+    for (std::uint32_t frame = 0; frame < seconds * 60; ++frame) {
+        const std::uint64_t before = crowd.plannedSegments();
+        crowd.advanceTo(frame / 60.0);
+        perSecond[frame / 60] += static_cast<double>(crowd.plannedSegments() - before);
+    }
+    // The steady share: the third episode's seconds (every character past its first by then).
+    const auto steadyFrom = static_cast<std::uint32_t>(std::ceil(2.0 * episode));
+    double steady = 0.0;
+    for (std::uint32_t s = steadyFrom; s < seconds; ++s) steady += perSecond[s];
+    steady /= static_cast<double>(seconds - steadyFrom);
+    ASSERT_GT(steady, 100.0) << "the crowd mills";
+    for (std::uint32_t s = 0; s < steadyFrom; ++s)
+        EXPECT_LT(perSecond[s], 1.25 * steady) << "second " << s << " plans " << perSecond[s] << " segments, the steady share " << steady;
 }
 
 TEST(Behaviours, MillingCharactersStandWalkRunAndStayNearHome) {

@@ -24,12 +24,11 @@ double offsetOf(const PlanContext& context) { return unit(context, 0, kBoundary,
 
 double millEpisodeStart(std::uint32_t episode, const PlanContext& context) {
     if (episode == 0) return 0.0;
-    // The first episode is longer by its longer wait.
-    return (static_cast<double>(episode) + offsetOf(context)) * context.rhythm.millEpisode + (kFirstWait - kWait);
+    return (static_cast<double>(episode) + offsetOf(context)) * context.rhythm.millEpisode;
 }
 
 std::uint32_t millEpisodeAt(double time, const PlanContext& context) {
-    const double guess = std::floor((time - (kFirstWait - kWait)) / context.rhythm.millEpisode - offsetOf(context));
+    const double guess = std::floor(time / context.rhythm.millEpisode - offsetOf(context));
     auto episode = static_cast<std::uint32_t>(std::clamp(guess, 0.0, 4.0e9));
     // The division may round across a boundary: settle on the episode whose start is at or before `time`.
     while (episode > 0 && millEpisodeStart(episode, context) > time) --episode;
@@ -59,7 +58,10 @@ float millPhase(const Agent& agent, std::uint32_t episode, const PlanContext& co
 }
 
 float millWait(std::uint32_t episode, const PlanContext& context) {
-    return (episode == 0 ? kFirstWait : kWait) * unit(context, episode, kBoundary, kWaitSalt);
+    // Episode 0 lasts from 0 s to episode 1's start, (1 + offset) episodes: standing the offset's share
+    // first leaves its trip an ordinary episode's time.
+    const double first = episode == 0 ? offsetOf(context) * context.rhythm.millEpisode : 0.0;
+    return static_cast<float>(first + kWait * unit(context, episode, kBoundary, kWaitSalt));
 }
 
 double millEpisodeLength(const anim::ClipLibrary& library, std::uint32_t model, const Gaits& gaits,
