@@ -46,9 +46,22 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       cull_(options.cull),
       animation_(options.animation),
       shadows_(options.shadows),
+      shadowRasterPath_(options.shadowRaster),
       stages_(options.framesInFlight, Stage::Idle),
       views_(options.framesInFlight) {
     if (cull_.impostors) enableImpostors();
+    setShadowRaster(options.shadowRaster);
+}
+
+void CrowdRecorder::setShadowRaster(render::ShadowRasterPath path) {
+    if (path == render::ShadowRasterPath::Compute && !shadowRaster_)
+        shadowRaster_ = std::make_unique<render::ShadowRaster>(context_, pool_, lists_, shadowMap_);
+    shadowRasterPath_ = path;
+}
+
+bool CrowdRecorder::rastersShadowsInCompute() const {
+    return shadowRasterPath_ == render::ShadowRasterPath::Compute && shadowRaster_ &&
+           method_->drawInput() == render::DrawInput::SkinnedVertices && shadowRaster_->canRead(method_->skinnedVertices());
 }
 
 CrowdRecorder::~CrowdRecorder() = default;
@@ -156,10 +169,19 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     if (!shadows_) return;
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
     const render::Camera camera = render::cameraOf(views_[slot]);
+    const bool compute = rastersShadowsInCompute();
+    if (compute) {
+        const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(views_[slot]), shape_,
+                                                            render::lightDirection());
+        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), light);
+    }
     shadowMap_.beginRendering(cmd);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
-    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
-                 render::CharacterDraw::Target::ShadowMap);
+    if (compute)
+        shadowRaster_->resolve(cmd);
+    else
+        draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
+                     render::CharacterDraw::Target::ShadowMap);
     // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
     if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push);
     shadowMap_.endRendering(cmd);
@@ -231,6 +253,7 @@ void CrowdRecorder::enableImpostors() {
 }
 
 void CrowdRecorder::setMethod(skin::Method method) {
+    if (shadowRaster_) shadowRaster_->forgetVertices();  // the new method's buffer may reuse the old handle
     method_.reset();
     method_ = createMethod(method);
 }
@@ -242,6 +265,7 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
                                            {"motion segments (GPU animation)", animationPass_.segmentBytes()},
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"shadow map", shadowMap_.bytes()}};
+    if (shadowRaster_) items.push_back({"shadow map depth (compute raster)", shadowRaster_->bytes()});
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
     if (impostorDraw_) items.push_back({"impostor quad indices and draws", impostorDraw_->bytes()});
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
@@ -260,6 +284,7 @@ std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
     const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
+                                             (shadowRaster_ ? shadowRaster_->bytes() : 0u) +
                                              (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms);
     return {{"state", state / n},
             {"bones", static_cast<double>(buffers_.bones().size) / n},

@@ -33,6 +33,7 @@
 #include "render/impostor_draw.h"
 #include "render/scene_pass.h"
 #include "render/shadow_map.h"
+#include "render/shadow_raster.h"
 #include "render/target_format.h"
 #include "skin/skinning_method.h"
 
@@ -47,6 +48,8 @@ struct RecorderOptions {
     render::CullSettings cull;
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
     std::uint32_t shadowMapSize = 2048;  // texels per side
+    // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
+    render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Hardware;
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     // Tests: the ground's tiles point-sampled, as before they were filtered (issue 19), to measure
@@ -110,6 +113,12 @@ public:
     const render::CullSettings& cull() const { return cull_; }
     void setShadows(bool on) { shadows_ = on; }
     bool shadows() const { return shadows_; }
+    void setShadowRaster(render::ShadowRasterPath path);
+    render::ShadowRasterPath shadowRaster() const { return shadowRasterPath_; }
+    // Whether this frame's mesh casters go through the compute rasterizer (the path asks for it and the
+    // method's skinned vertices can be read by it).
+    bool rastersShadowsInCompute() const;
+    const render::ShadowMap& shadowMap() const { return shadowMap_; }
     void setAnimation(render::AnimationPath path) { animation_ = path; }
     render::AnimationPath animation() const { return animation_; }
 
@@ -168,6 +177,8 @@ private:
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;
+    render::ShadowRasterPath shadowRasterPath_;
+    std::unique_ptr<render::ShadowRaster> shadowRaster_;  // made when the compute path is first asked for
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded

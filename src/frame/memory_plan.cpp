@@ -64,6 +64,8 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                   {"culling lists and draw commands",
                    render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd))},
                   {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
+    if (options.shadowRaster == render::ShadowRasterPath::Compute)
+        plan.items.push_back({"shadow map depth (compute raster)", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4});
     if (options.cull.impostors) {
         std::vector<gpu::ModelRecord> records(crowd.models().size());
         plan.items.push_back(

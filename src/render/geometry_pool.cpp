@@ -76,7 +76,7 @@ GeometryPool::GeometryPool(const gpu::VulkanContext& context, std::span<const mo
         bindVertices_ = gpu::createBufferWithData(context, std::as_bytes(std::span(data.vertices)), vertexUse,
                                                   "bind-pose vertices");
         indices_ = gpu::createBufferWithData(context, std::as_bytes(std::span(data.indices)),
-                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "indices");
+                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
         uvs_ = gpu::createBufferWithData(context, std::as_bytes(std::span(data.uvs)),
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "texture coordinates");
         modelTable_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),

@@ -41,7 +41,8 @@ glm::mat4 lightViewProjection(const Camera& camera, float aspect, const CrowdSha
 
 ShadowMap::ShadowMap(const gpu::VulkanContext& context, std::uint32_t size) : context_(context) {
     image_ = gpu::createImage2D(context, {size, size}, kShadowFormat,
-                                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT,  // read back by tests
                                 "shadow map");
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = VK_FILTER_LINEAR;

@@ -33,6 +33,7 @@ public:
     ShadowMap(const ShadowMap&) = delete;
     ShadowMap& operator=(const ShadowMap&) = delete;
 
+    VkImage image() const { return image_.image; }
     VkImageView view() const { return image_.view; }
     VkSampler sampler() const { return sampler_; }
     std::uint32_t size() const { return image_.extent.width; }

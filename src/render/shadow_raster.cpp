@@ -1,0 +1,133 @@
+#include "render/shadow_raster.h"
+
+#include <algorithm>
+
+#include "gpu/barriers.h"
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+#include "gpu_types.h"
+#include "render/character_draw.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
+#include "render/shadow_map.h"
+#include "shadow_raster.comp.spv.h"
+#include "shadow_resolve.frag.spv.h"
+#include "shadow_resolve.vert.spv.h"
+
+namespace render {
+namespace {
+
+struct RasterPush {
+    glm::mat4 lightViewProjection;
+    std::uint32_t size;
+    std::uint32_t groupsPerRow;
+    std::uint32_t firstDraw;
+};
+
+constexpr std::uint32_t kMostGroupsPerRow = 65535;  // the least maxComputeWorkGroupCount[0] Vulkan allows
+constexpr std::uint32_t kFarDepthBits = 0x3F800000u;  // 1.0f: the cleared map
+
+constexpr gpu::Access kComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+
+}  // namespace
+
+ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const DrawLists& lists,
+                           const ShadowMap& map)
+    : context_(context), pool_(pool), lists_(lists), size_(map.size()) {
+    try {
+        depth_ = gpu::createBuffer(context, VkDeviceSize{size_} * size_ * 4,
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   gpu::MemoryUse::DeviceLocal, "shadow map depth (compute raster)");
+        const gpu::BufferBinding resolveBindings[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, depth_.buffer}};
+        resolveSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_FRAGMENT_BIT, resolveBindings);
+        const VkPushConstantRange resolvePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(std::uint32_t)};
+        const VkDescriptorSetLayout resolveSets[] = {resolveSet_->layout()};
+        resolveLayout_ = gpu::createPipelineLayout(context, resolveSets, {&resolvePush, 1});
+        gpu::GraphicsPipelineDesc desc;
+        desc.vertexShader = shadow_resolve_vert_spv;
+        desc.fragmentShader = shadow_resolve_frag_spv;
+        desc.depthFormat = kShadowFormat;
+        desc.cullMode = VK_CULL_MODE_NONE;
+        desc.layout = resolveLayout_;
+        resolvePipeline_ = gpu::createGraphicsPipeline(context, desc);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+ShadowRaster::~ShadowRaster() { release(); }
+
+void ShadowRaster::release() {
+    for (VkPipeline* pipeline : {&rasterPipeline_, &resolvePipeline_}) {
+        if (*pipeline) vkDestroyPipeline(context_.device, *pipeline, nullptr);
+        *pipeline = VK_NULL_HANDLE;
+    }
+    for (VkPipelineLayout* layout : {&rasterLayout_, &resolveLayout_}) {
+        if (*layout) vkDestroyPipelineLayout(context_.device, *layout, nullptr);
+        *layout = VK_NULL_HANDLE;
+    }
+    rasterSet_.reset();
+    resolveSet_.reset();
+    gpu::destroyBuffer(context_, depth_);
+}
+
+bool ShadowRaster::canRead(const SkinnedVertices& vertices) const {
+    return vertices.buffer && vertices.normalsOffset > 0 &&
+           vertices.normalsOffset <= context_.properties.limits.maxStorageBufferRange;
+}
+
+void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
+    if (vertices.buffer->buffer == boundVertices_) return;
+    constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const gpu::BufferBinding bindings[] = {{storage, lists_.draws().buffer},
+                                           {storage, lists_.totals().buffer},
+                                           {storage, pool_.indices().buffer},
+                                           {storage, vertices.buffer->buffer, 0, vertices.normalsOffset},
+                                           {storage, depth_.buffer}};
+    rasterSet_ = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
+    if (!rasterPipeline_) {
+        // Every later set has the same definition, so the layout made with the first one stays valid.
+        const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(RasterPush)};
+        const VkDescriptorSetLayout sets[] = {rasterSet_->layout()};
+        rasterLayout_ = gpu::createPipelineLayout(context_, sets, {&push, 1});
+        rasterPipeline_ = gpu::createComputePipeline(context_, shadow_raster_comp_spv, rasterLayout_, {});
+    }
+    boundVertices_ = vertices.buffer->buffer;
+}
+
+void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection) {
+    bindVertices(vertices);
+    // The previous frame's resolve read the buffer: done before it is cleared.
+    gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0},
+                       {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    vkCmdFillBuffer(cmd, depth_.buffer, 0, VK_WHOLE_SIZE, kFarDepthBits);
+    gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                       kComputeReadWrite);
+    // The skinned vertices (a compute pass's or a copy's) and the lists (culling's) were written
+    // for the graphics passes; this pass reads them as storage.
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+    const std::uint32_t groups = lists_.drawCapacity();
+    const std::uint32_t perRow = std::min(groups, kMostGroupsPerRow);
+    const RasterPush push{lightViewProjection, size_, perRow, lists_.drawCapacity()};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rasterPipeline_);
+    const VkDescriptorSet set = rasterSet_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rasterLayout_, 0, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, 1);
+    gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite,
+                       {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+}
+
+void ShadowRaster::resolve(VkCommandBuffer cmd) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolvePipeline_);
+    const VkDescriptorSet set = resolveSet_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolveLayout_, 0, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, resolveLayout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof size_, &size_);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+}
+
+}  // namespace render

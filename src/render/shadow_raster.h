@@ -1,0 +1,71 @@
+#pragma once
+// The shadow map's mesh casters rasterized in compute instead of by the graphics pipeline (issue 18,
+// "the raster wall": on the H100 the hardware rasterizer is a small graphics slice, compute is every
+// SM). A depth-only map needs no more than a 32-bit atomic min per texel: the casters' triangles go to
+// a buffer of depth bits (shaders/shadow_raster.comp.glsl), which a full-screen pass then writes into
+// the shadow map's depth image, where the impostor casters are drawn over it as before. The map is
+// the hardware pass's texel for texel but for rounding on triangle edges (tests/test_shadow_raster.cpp).
+// Only for methods whose skinned vertices are in a buffer (not the `vs` baseline, which skins while
+// it draws), and only when that buffer's position stream fits one storage binding.
+#include <cstdint>
+#include <memory>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gpu/buffer.h"
+#include "gpu/descriptor_bundle.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+class DrawLists;
+class GeometryPool;
+
+// How the shadow map's mesh casters are drawn: the graphics pipeline's rasterizer, or this compute pass
+// (where the method's skinned vertices allow it; else the hardware pass draws them).
+enum class ShadowRasterPath { Hardware, Compute };
+
+class ShadowMap;
+struct SkinnedVertices;
+
+class ShadowRaster {
+public:
+    ShadowRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const DrawLists& lists,
+                 const ShadowMap& map);
+    ~ShadowRaster();
+    ShadowRaster(const ShadowRaster&) = delete;
+    ShadowRaster& operator=(const ShadowRaster&) = delete;
+
+    // Whether these skinned vertices can be read as one storage binding on this device.
+    bool canRead(const SkinnedVertices& vertices) const;
+    // Outside any rendering pass, after the frame's skinning and lists: clears the depth buffer and
+    // rasterizes the shadow pass's mesh casters into it. Rebinds the vertices when their buffer
+    // changed (a method switch, made with the device idle).
+    void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection);
+    // The skinned vertices' buffer is going away (a method switch): bind the next one afresh.
+    void forgetVertices() { boundVertices_ = VK_NULL_HANDLE; }
+    // Inside the shadow map's rendering pass: writes the rasterized depth into the map.
+    void resolve(VkCommandBuffer cmd) const;
+    VkDeviceSize bytes() const { return depth_.size; }
+
+private:
+    void bindVertices(const SkinnedVertices& vertices);
+    void release();
+
+    const gpu::VulkanContext& context_;
+    const GeometryPool& pool_;
+    const DrawLists& lists_;
+    std::uint32_t size_ = 0;
+    gpu::Buffer depth_;
+    VkBuffer boundVertices_ = VK_NULL_HANDLE;
+    std::unique_ptr<gpu::DescriptorBundle> rasterSet_;
+    std::unique_ptr<gpu::DescriptorBundle> resolveSet_;
+    VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
+    VkPipelineLayout resolveLayout_ = VK_NULL_HANDLE;
+    VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
+    VkPipeline resolvePipeline_ = VK_NULL_HANDLE;
+};
+
+}  // namespace render
