@@ -75,11 +75,17 @@ inline constexpr float kHorizonColor[3] = {0.55f, 0.7f, 0.9f};
 enum class Method { TwoPass, TwoPassDirect, VertexShader, VertexShaderInstanced, Compute, Static };
 enum class Animation { Gpu, Cpu };
 enum class Culling { Gpu, Cpu, Off };
+// How the shadow map's mesh casters are rasterized: by the graphics pipeline, or in compute (a 32-bit
+// atomic min of depth per texel, on every shader core instead of the graphics slice). Compute applies
+// to the methods whose skinned vertices are in a buffer (all but vs and vs-instanced, which keep the
+// graphics pipeline); impostor casters stay on the graphics pipeline.
+enum class ShadowRaster { Hardware, Compute };
 // Names for reports and menus: "two-pass", "two-pass-direct", "vs", "vs-instanced", "compute",
-// "static"; "gpu", "cpu"; "gpu", "cpu", "off".
+// "static"; "gpu", "cpu"; "gpu", "cpu", "off"; "hardware", "compute".
 const char* methodName(Method method);
 const char* animationName(Animation animation);
 const char* cullingName(Culling culling);
+const char* shadowRasterName(ShadowRaster raster);
 
 // The host's colour pass.
 struct TargetFormat {
@@ -109,6 +115,7 @@ struct RendererSettings {
     // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at
     // all; off: at their level in view.
     bool shadowLod = true;
+    ShadowRaster shadowRaster = ShadowRaster::Hardware;
     std::uint32_t shadowMapSize = 2048;
     std::uint32_t framesInFlight = 2;
     // A renderer of the same models in the same order whose baked impostor atlas this one shares
@@ -213,6 +220,7 @@ public:
     void setMethod(Method method);
     void setShadows(bool on);
     void setShadowLod(bool on);
+    void setShadowRaster(ShadowRaster raster);
     void setCulling(Culling culling, bool lod);
     void setImpostors(bool on);
     void setAnimation(Animation animation);

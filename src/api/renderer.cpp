@@ -33,6 +33,10 @@ skin::Method internalMethod(Method method) {
     throw Error(ErrorCode::InvalidArgument, "unknown skinning method " + std::to_string(static_cast<int>(method)));
 }
 
+render::ShadowRasterPath internalShadowRaster(ShadowRaster raster) {
+    return raster == ShadowRaster::Compute ? render::ShadowRasterPath::Compute : render::ShadowRasterPath::Hardware;
+}
+
 render::CullSettings cullSettings(const RendererSettings& s) {
     render::CullSettings cull;
     cull.mode = s.culling == Culling::Cpu ? render::CullMode::Cpu
@@ -67,6 +71,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.cull = cullSettings(s);
     o.shadows = s.shadows;
     o.shadowMapSize = s.shadowMapSize;
+    o.shadowRaster = internalShadowRaster(s.shadowRaster);
     o.framesInFlight = s.framesInFlight;
     o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
     return o;
@@ -116,6 +121,7 @@ const char* animationName(Animation animation) {
     return render::animationPathName(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
 }
 const char* cullingName(Culling culling) { return render::cullModeName(detail::cullSettings({.culling = culling}).mode); }
+const char* shadowRasterName(ShadowRaster raster) { return raster == ShadowRaster::Compute ? "compute" : "hardware"; }
 
 DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {
     return detail::translated([&] {
@@ -260,6 +266,11 @@ void Renderer::setShadowLod(bool on) {
     s.shadowLod = on;
     detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
     data_->settings = s;
+}
+
+void Renderer::setShadowRaster(ShadowRaster raster) {
+    detail::translated([&] { data_->frame->setShadowRaster(detail::internalShadowRaster(raster)); });
+    data_->settings.shadowRaster = raster;
 }
 
 void Renderer::setCulling(Culling culling, bool lod) {

@@ -39,6 +39,12 @@ bool parseCulling(const std::string& name, crowdgpu::Culling& out) {
     return parseByName(name, std::initializer_list<Culling>{Culling::Gpu, Culling::Cpu, Culling::Off}, crowdgpu::cullingName, out);
 }
 
+bool parseShadowRaster(const std::string& name, crowdgpu::ShadowRaster& out) {
+    using crowdgpu::ShadowRaster;
+    return parseByName(name, std::initializer_list<ShadowRaster>{ShadowRaster::Hardware, ShadowRaster::Compute},
+                       crowdgpu::shadowRasterName, out);
+}
+
 bool parseAnimation(const std::string& name, crowdgpu::Animation& out) {
     using crowdgpu::Animation;
     return parseByName(name, std::initializer_list<Animation>{Animation::Gpu, Animation::Cpu}, crowdgpu::animationName, out);

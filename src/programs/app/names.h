@@ -18,6 +18,7 @@ std::string methodList();
 // Each returns false for a name it does not know and leaves `out` as it was.
 bool parseMethod(const std::string& name, crowdgpu::Method& out);
 bool parseCulling(const std::string& name, crowdgpu::Culling& out);
+bool parseShadowRaster(const std::string& name, crowdgpu::ShadowRaster& out);
 bool parseAnimation(const std::string& name, crowdgpu::Animation& out);
 bool parseBehaviour(const std::string& name, crowdgpu::Behaviour& out);
 

@@ -41,6 +41,9 @@ usage: crowd-render [options]
   --shadow-lod on|off     casters drawn into the shadow map at a level of detail from their size in it
                           (texels, the --lod-thresholds values), never finer than in view, and not at
                           all under 2 texels; off: at their level in view (default on)
+  --shadow-raster hardware|compute
+                          the shadow map's mesh casters drawn by the graphics pipeline or rasterized
+                          in compute (methods with skinned vertices in a buffer; default hardware)
   --aa off|msaa2|msaa4|msaa8
                           anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
                           and ground, averaged into the picture (default %AA%)
@@ -196,6 +199,11 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
         else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
         else if (flag == "--shadow-lod") options.cull.shadowLod = parseOnOff(flag, next());
+        else if (flag == "--shadow-raster") {
+            const std::string raster = next();
+            if (!app::parseShadowRaster(raster, options.cull.shadowRaster))
+                throw app::Error("--shadow-raster: '" + raster + "' is not hardware or compute");
+        }
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
