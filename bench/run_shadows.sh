@@ -104,7 +104,7 @@ done
             "$(csv_value "$csv" gpu_draw_ms)" "$(awk -v t="$(csv_value "$csv" shadow_triangles)" 'BEGIN { print t / 1e6 }')" \
             "$(awk -v t="$(csv_value "$csv" triangles_drawn)" 'BEGIN { print t / 1e6 }')" \
             "$(awk -v t="$(csv_value "$csv" shadow_triangles)" -v ms="$(csv_value "$csv" gpu_shadow_ms)" \
-               'BEGIN { print ms > 0 ? t / ms / 1e3 : 0 }')"
+               'BEGIN { print (ms > 0 ? t / ms / 1e3 : 0) }')"
         done
       done
     done

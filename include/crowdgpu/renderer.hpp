@@ -115,7 +115,7 @@ struct RendererSettings {
     // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at
     // all; off: at their level in view.
     bool shadowLod = true;
-    ShadowRaster shadowRaster = ShadowRaster::Hardware;
+    ShadowRaster shadowRaster = ShadowRaster::Compute;
     std::uint32_t shadowMapSize = 2048;
     std::uint32_t framesInFlight = 2;
     // A renderer of the same models in the same order whose baked impostor atlas this one shares

@@ -49,7 +49,7 @@ struct RecorderOptions {
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
-    render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Hardware;
+    render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     // Tests: the ground's tiles point-sampled, as before they were filtered (issue 19), to measure

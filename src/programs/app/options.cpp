@@ -43,7 +43,7 @@ usage: crowd-render [options]
                           all under 2 texels; off: at their level in view (default on)
   --shadow-raster hardware|compute
                           the shadow map's mesh casters drawn by the graphics pipeline or rasterized
-                          in compute (methods with skinned vertices in a buffer; default hardware)
+                          in compute (methods with skinned vertices in a buffer; default compute)
   --aa off|msaa2|msaa4|msaa8
                           anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
                           and ground, averaged into the picture (default %AA%)

@@ -30,7 +30,7 @@ struct CullOptions {
     bool impostors = false;
     float impostorThreshold = 32.0f;
     bool shadowLod = true;  // casters' level in the shadow map from their size there (crowdgpu::RendererSettings)
-    crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Hardware;  // how the map's mesh casters are drawn
+    crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Compute;  // how the map's mesh casters are drawn
 };
 
 // What a crowd is: models, size, clip, seed.
