@@ -7,6 +7,7 @@
 #include <span>
 
 #include "anim/clip_library.h"
+#include "anim/keyframes.h"
 #include "anim/transform.h"
 
 namespace anim {
@@ -33,5 +34,12 @@ struct SamplingJob {
 // 1.5e-4 rad of the arc there, and no inverse cosine and two sines for every joint of every character.
 inline constexpr float kNlerpAbove = 0.995f;
 glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s);
+
+// The job's steps for one track, shared with the SoA job (anim/soa_sampling_job.h):
+// the key span holding t: first the cursor's span and the one after it, then a binary search;
+KeySpan findKeysFromCursor(const float* times, std::uint32_t count, float t, std::uint16_t& cursor);
+// a keyed track's value at t as glTF's interpolation defines it (rotations not yet normalized).
+glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
+                      std::uint16_t& cursor);
 
 }  // namespace anim
