@@ -9,22 +9,6 @@
 
 namespace anim {
 
-KeySpan findKeysFromCursor(const float* times, std::uint32_t count, float t, std::uint16_t& cursor) {
-    if (count < 2 || t <= times[0]) return {0, 0.0f, 0.0f};
-    if (t >= times[count - 1]) return {count - 1, 0.0f, 0.0f};
-    std::uint32_t key = std::min<std::uint32_t>(cursor, count - 2);
-    if (!(times[key] <= t && t < times[key + 1])) {
-        if (key + 2 < count && times[key + 1] <= t && t < times[key + 2]) {
-            ++key;
-        } else {
-            key = static_cast<std::uint32_t>(std::upper_bound(times, times + count, t) - times) - 1;
-        }
-    }
-    cursor = static_cast<std::uint16_t>(std::min<std::uint32_t>(key, std::numeric_limits<std::uint16_t>::max()));
-    const float interval = times[key + 1] - times[key];
-    return {key, (t - times[key]) / interval, interval};
-}
-
 glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
                       std::uint16_t& cursor) {
     const KeySpan span = findKeysFromCursor(library.keyTimes().data() + track.firstKey, track.keyCount, t, cursor);

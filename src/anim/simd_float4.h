@@ -15,6 +15,14 @@
 #define CROWD_ANIM_HAVE_SSE2 1
 #endif
 
+// For the SoA maths' larger functions, which GCC would otherwise call out of line, passing four
+// Float4s through memory each way: inlined, they stay in registers.
+#if defined(__GNUC__)
+#define CROWD_SIMD_INLINE [[gnu::always_inline]] inline
+#else
+#define CROWD_SIMD_INLINE inline
+#endif
+
 namespace simd {
 
 // The portable backend. Masks are four all-ones or all-zero words, as SSE's comparisons give.

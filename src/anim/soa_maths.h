@@ -100,7 +100,7 @@ F sinQuarterTurn(F x) {
 
 // anim::slerpShortest, four pairs at once: the shorter arc, nlerp above kNlerpAbove, normalized.
 template <class F>
-Quat<F> slerpShortest(const Quat<F>& a, Quat<F> b, F s) {
+CROWD_SIMD_INLINE Quat<F> slerpShortest(const Quat<F>& a, Quat<F> b, F s) {
     F cosTheta = dotXyzw(a, b);
     const F zero = F::splat(0.0f);
     const typename F::Mask flip = cosTheta < zero;
@@ -152,7 +152,7 @@ Rows<F> compose(const Rows<F>& a, const Rows<F>& b) { return {composeRow(a.r0, b
 
 // anim::affineOf of four joints; lane i of the result's rows is joint i's. `rows[lane]` receives them.
 template <class F>
-void affinesOf(const SoaTransform& t, Rows<F> rows[kSoaLanes]) {
+CROWD_SIMD_INLINE void affinesOf(const SoaTransform& t, Rows<F> rows[kSoaLanes]) {
     const Quat<F> q = load<F>(t.rotation);
     const Vec3<F> s = load<F>(t.scale);
     const F xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;

@@ -15,18 +15,26 @@ struct KeyPair {
     float s;
 };
 
-KeyPair keyPair(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
-                std::uint16_t& cursor, const glm::vec4& rest) {
-    if (track.keyCount == 0) return {rest, rest, 0.0f};
-    if (track.interpolation == 2u) {  // cubic spline: the scalar job's own code
-        const glm::vec4 value = sampleTrack(library, track, rotation, t, cursor);
-        return {value, value, 0.0f};
+// Cubic splines: the scalar job's own code (out of line: rare).
+[[gnu::noinline]] void cubicKeyPair(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
+                                    std::uint16_t& cursor, KeyPair& out) {
+    const glm::vec4 value = sampleTrack(library, track, rotation, t, cursor);
+    out = {value, value, 0.0f};
+}
+
+inline void keyPair(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
+                    std::uint16_t& cursor, const glm::vec4& rest, KeyPair& out) {
+    if (track.keyCount == 0) {
+        out = {rest, rest, 0.0f};
+        return;
     }
+    if (track.interpolation == 2u) return cubicKeyPair(library, track, rotation, t, cursor, out);
     const KeySpan span = findKeysFromCursor(library.keyTimes().data() + track.firstKey, track.keyCount, t, cursor);
     const glm::vec4* values = library.keyValues().data() + track.firstValue;
     if (track.interpolation == 0u || span.key + 1 >= track.keyCount || span.blend == 0.0f)
-        return {values[span.key], values[span.key], 0.0f};
-    return {values[span.key], values[span.key + 1], span.blend};
+        out = {values[span.key], values[span.key], 0.0f};
+    else
+        out = {values[span.key], values[span.key + 1], span.blend};
 }
 
 // The four lanes' a (or b) values turned into structure of arrays.
@@ -43,7 +51,7 @@ F blends(const KeyPair (&keys)[kSoaLanes]) { return F::set(keys[0].s, keys[1].s,
 
 // Translation or scale: glm::mix of the keys' xyz.
 template <class F>
-void lerpLanes(const KeyPair (&keys)[kSoaLanes], SoaFloat3& out) {
+CROWD_SIMD_INLINE void lerpLanes(const KeyPair (&keys)[kSoaLanes], SoaFloat3& out) {
     const soa::Quat<F> a = lanes<F>(keys, &KeyPair::a), b = lanes<F>(keys, &KeyPair::b);
     const soa::Vec3<F> mixed = soa::mix(soa::Vec3<F>{a.x, a.y, a.z}, soa::Vec3<F>{b.x, b.y, b.z}, blends<F>(keys));
     soa::store(mixed, out);
@@ -51,7 +59,7 @@ void lerpLanes(const KeyPair (&keys)[kSoaLanes], SoaFloat3& out) {
 
 // Rotation: slerp where the lane blends, then normalized as a glm::quat (the scalar job's toQuat).
 template <class F>
-void slerpLanes(const KeyPair (&keys)[kSoaLanes], SoaQuat& out) {
+CROWD_SIMD_INLINE void slerpLanes(const KeyPair (&keys)[kSoaLanes], SoaQuat& out) {
     soa::Quat<F> q = lanes<F>(keys, &KeyPair::a);
     const F s = blends<F>(keys);
     const typename F::Mask held = s == F::splat(0.0f);
@@ -88,9 +96,9 @@ void SoaSamplingJob::runWith() const {
             }
             const gpu::AnimationTrack* track = tracks + 3u * j;
             std::uint16_t* cursor = cursors.data() + 3u * j;
-            translation[lane] = keyPair(*library, track[0], false, t, cursor[0], rest[j].restTranslation);
-            rotation[lane] = keyPair(*library, track[1], true, t, cursor[1], rest[j].restRotation);
-            scale[lane] = keyPair(*library, track[2], false, t, cursor[2], rest[j].restScale);
+            keyPair(*library, track[0], false, t, cursor[0], rest[j].restTranslation, translation[lane]);
+            keyPair(*library, track[1], true, t, cursor[1], rest[j].restRotation, rotation[lane]);
+            keyPair(*library, track[2], false, t, cursor[2], rest[j].restScale, scale[lane]);
         }
         lerpLanes<F>(translation, output[g].translation);
         slerpLanes<F>(rotation, output[g].rotation);
