@@ -49,12 +49,15 @@ soa::Quat<F> lanes(const KeyPair (&keys)[kSoaLanes], glm::vec4 KeyPair::*value) 
 template <class F>
 F blends(const KeyPair (&keys)[kSoaLanes]) { return F::set(keys[0].s, keys[1].s, keys[2].s, keys[3].s); }
 
-// Translation or scale: glm::mix of the keys' xyz.
+// Translation or scale: glm::mix of the keys' xyz. Four held lanes (most groups: few joints have
+// keyed translations, and scales fewer) keep their values as they are, as the scalar job does.
 template <class F>
 CROWD_SIMD_INLINE void lerpLanes(const KeyPair (&keys)[kSoaLanes], SoaFloat3& out) {
-    const soa::Quat<F> a = lanes<F>(keys, &KeyPair::a), b = lanes<F>(keys, &KeyPair::b);
-    const soa::Vec3<F> mixed = soa::mix(soa::Vec3<F>{a.x, a.y, a.z}, soa::Vec3<F>{b.x, b.y, b.z}, blends<F>(keys));
-    soa::store(mixed, out);
+    const soa::Quat<F> a = lanes<F>(keys, &KeyPair::a);
+    const F s = blends<F>(keys);
+    if ((s == F::splat(0.0f)).all()) return soa::store(soa::Vec3<F>{a.x, a.y, a.z}, out);
+    const soa::Quat<F> b = lanes<F>(keys, &KeyPair::b);
+    soa::store(soa::mix(soa::Vec3<F>{a.x, a.y, a.z}, soa::Vec3<F>{b.x, b.y, b.z}, s), out);
 }
 
 // Rotation: slerp where the lane blends, then normalized as a glm::quat (the scalar job's toQuat).
