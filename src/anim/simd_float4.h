@@ -103,8 +103,12 @@ struct Sse2Float4 {
         _mm_store_ps(out, v);
         return out[i];
     }
+    // pshufd rather than shufps: it writes a new register, where shufps overwrites its source and
+    // costs a copy first (the palette's products broadcast nine lanes each).
     template <int I>
-    Sse2Float4 broadcast() const { return {_mm_shuffle_ps(v, v, _MM_SHUFFLE(I, I, I, I))}; }
+    Sse2Float4 broadcast() const {
+        return {_mm_castsi128_ps(_mm_shuffle_epi32(_mm_castps_si128(v), _MM_SHUFFLE(I, I, I, I)))};
+    }
 
     friend Sse2Float4 operator+(Sse2Float4 a, Sse2Float4 b) { return {_mm_add_ps(a.v, b.v)}; }
     friend Sse2Float4 operator-(Sse2Float4 a, Sse2Float4 b) { return {_mm_sub_ps(a.v, b.v)}; }
