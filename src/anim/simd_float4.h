@@ -10,7 +10,8 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__SSE2__) || defined(_M_X64)
+// CROWD_ANIM_PORTABLE_ONLY (the CMake option of that name) builds as for a processor without SSE2.
+#if (defined(__SSE2__) || defined(_M_X64)) && !defined(CROWD_ANIM_PORTABLE_ONLY)
 #include <emmintrin.h>
 #define CROWD_ANIM_HAVE_SSE2 1
 #endif
