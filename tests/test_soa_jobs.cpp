@@ -306,12 +306,12 @@ TEST(SoaJobs, PaletteEqualsTheScalarJob) {
     }
 }
 
-// The crowd's bones (SoA jobs) against the scalar chain the crowd ran before: sampling both clips,
-// blending, palette, for characters caught mid-crossfade between random clips.
-TEST(SoaJobs, CrowdBonesEqualTheScalarJobsMidCrossfade) {
+// Soldiers, horses and test characters on a grid, each started on a random clip with a 1.2 s crossfade
+// up to 1 s before `time`, planned to `time`.
+crowd::Crowd crossfadingCrowd(std::uint32_t count, float time) {
     const std::vector<const model::SkinnedModel*> models = {&soldier(), &horse(), &strip()};
     std::vector<crowd::Character> characters;
-    for (std::uint32_t i = 0; i < 36; ++i) {
+    for (std::uint32_t i = 0; i < count; ++i) {
         crowd::Character c;
         c.position = {1.5f * static_cast<float>(i % 6), 0.0f, 1.5f * static_cast<float>(i / 6)};
         c.model = i % models.size();
@@ -319,7 +319,6 @@ TEST(SoaJobs, CrowdBonesEqualTheScalarJobsMidCrossfade) {
         characters.push_back(c);
     }
     crowd::Crowd crowd(models, characters);
-    const float time = 4.0f;
     std::mt19937 random(11);
     for (std::uint32_t i = 0; i < crowd.size(); ++i) {
         const auto clips = static_cast<std::uint32_t>(crowd.modelOf(i).clips.size());
@@ -327,6 +326,14 @@ TEST(SoaJobs, CrowdBonesEqualTheScalarJobsMidCrossfade) {
                    1.2f, 0.8f + 0.05f * static_cast<float>(i % 8));
     }
     crowd.advanceTo(time);
+    return crowd;
+}
+
+// The crowd's bones (SoA jobs) against the scalar chain the crowd ran before: sampling both clips,
+// blending, palette, for characters caught mid-crossfade between random clips.
+TEST(SoaJobs, CrowdBonesEqualTheScalarJobsMidCrossfade) {
+    const float time = 4.0f;
+    const crowd::Crowd crowd = crossfadingCrowd(36, time);
     const anim::ClipLibrary& library = crowd.library();
     std::uint32_t blending = 0;
     float worst = 0.0f;
