@@ -8,28 +8,10 @@
 #include "anim/sample_clip.h"
 
 namespace anim {
-namespace {
-
-// The span holding t: first the cursor's span and the one after it, then a binary search.
-KeySpan findKeys(const float* times, std::uint32_t count, float t, std::uint16_t& cursor) {
-    if (count < 2 || t <= times[0]) return {0, 0.0f, 0.0f};
-    if (t >= times[count - 1]) return {count - 1, 0.0f, 0.0f};
-    std::uint32_t key = std::min<std::uint32_t>(cursor, count - 2);
-    if (!(times[key] <= t && t < times[key + 1])) {
-        if (key + 2 < count && times[key + 1] <= t && t < times[key + 2]) {
-            ++key;
-        } else {
-            key = static_cast<std::uint32_t>(std::upper_bound(times, times + count, t) - times) - 1;
-        }
-    }
-    cursor = static_cast<std::uint16_t>(std::min<std::uint32_t>(key, std::numeric_limits<std::uint16_t>::max()));
-    const float interval = times[key + 1] - times[key];
-    return {key, (t - times[key]) / interval, interval};
-}
 
 glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
                       std::uint16_t& cursor) {
-    const KeySpan span = findKeys(library.keyTimes().data() + track.firstKey, track.keyCount, t, cursor);
+    const KeySpan span = findKeysFromCursor(library.keyTimes().data() + track.firstKey, track.keyCount, t, cursor);
     const glm::vec4* values = library.keyValues().data() + track.firstValue;
     const bool lastKey = span.key + 1 >= track.keyCount;
     if (track.interpolation == 2u) {  // cubic spline
@@ -46,6 +28,8 @@ glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& tra
     if (rotation) return slerpShortest(values[span.key], values[span.key + 1], span.blend);
     return glm::mix(values[span.key], values[span.key + 1], span.blend);
 }
+
+namespace {
 
 glm::quat toQuat(const glm::vec4& v) { return glm::normalize(glm::quat(v.w, v.x, v.y, v.z)); }
 

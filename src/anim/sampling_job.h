@@ -3,10 +3,13 @@
 // joint's local transform. Each track remembers, in a caller-owned cursor, the key span it used last:
 // time mostly moves forward by less than a key, so the next sample finds its span in one or two
 // comparisons instead of a binary search. A cursor is only a hint; any value gives the same pose.
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include "anim/clip_library.h"
+#include "anim/keyframes.h"
 #include "anim/transform.h"
 
 namespace anim {
@@ -33,5 +36,28 @@ struct SamplingJob {
 // 1.5e-4 rad of the arc there, and no inverse cosine and two sines for every joint of every character.
 inline constexpr float kNlerpAbove = 0.995f;
 glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s);
+
+// The job's steps for one track, shared with the SoA job (anim/soa_sampling_job.h).
+// The key span holding t: first the cursor's span and the one after it, then a binary search (inline:
+// both jobs call it for every keyed track of every character).
+inline KeySpan findKeysFromCursor(const float* times, std::uint32_t count, float t, std::uint16_t& cursor) {
+    if (count < 2 || t <= times[0]) return {0, 0.0f, 0.0f};
+    if (t >= times[count - 1]) return {count - 1, 0.0f, 0.0f};
+    std::uint32_t key = std::min<std::uint32_t>(cursor, count - 2);
+    if (!(times[key] <= t && t < times[key + 1])) {
+        if (key + 2 < count && times[key + 1] <= t && t < times[key + 2]) {
+            ++key;
+        } else {
+            key = static_cast<std::uint32_t>(std::upper_bound(times, times + count, t) - times) - 1;
+        }
+    }
+    cursor = static_cast<std::uint16_t>(std::min<std::uint32_t>(key, std::numeric_limits<std::uint16_t>::max()));
+    const float interval = times[key + 1] - times[key];
+    return {key, (t - times[key]) / interval, interval};
+}
+
+// A keyed track's value at t as glTF's interpolation defines it (rotations not yet normalized).
+glm::vec4 sampleTrack(const ClipLibrary& library, const gpu::AnimationTrack& track, bool rotation, float t,
+                      std::uint16_t& cursor);
 
 }  // namespace anim

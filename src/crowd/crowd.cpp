@@ -10,9 +10,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "anim/blending_job.h"
-#include "anim/palette_job.h"
-#include "anim/sampling_job.h"
+#include "anim/soa_blending_job.h"
+#include "anim/soa_palette_job.h"
+#include "anim/soa_sampling_job.h"
 #include "crowd/epoch.h"
 #include "crowd/worker_pool.h"
 #include "model/measure_root_motion.h"
@@ -390,29 +390,31 @@ void Crowd::animateState(std::uint32_t index, const MotionState& state, std::spa
     const Character& c = characters_[index];
     const std::uint32_t joints = library_.jointCount(c.model);
     // Per-thread scratch, reused by the pool's long-lived threads: once warm, animation allocates nothing.
-    thread_local std::vector<anim::Transform> from, to;
+    // Poses are structure of arrays, four joints a group: the SoA jobs run four joints per instruction
+    // and give the scalar jobs' bones (tests/test_soa_jobs.cpp).
+    thread_local std::vector<anim::SoaTransform> from, to;
     thread_local std::vector<anim::Affine> modelSpace;
-    from.resize(joints);
-    to.resize(joints);
+    from.resize(anim::soaGroups(joints));
+    to.resize(anim::soaGroups(joints));
     modelSpace.resize(joints);
     std::span<std::uint16_t> cursors(cursors_.data() + cursorOffsets_[index], 6u * joints);
     if (library_.clipCount(c.model) == 0) {
-        for (std::uint32_t j = 0; j < joints; ++j) to[j] = models_[c.model]->skeleton.restPose[j];
+        anim::toSoa(models_[c.model]->skeleton.restPose, to);
     } else {
         // Both clips at the same point of their cycles (synchronized phase).
         const float cycle = state.phase - std::floor(state.phase);
-        auto sample = [&](std::uint32_t clip, std::span<std::uint16_t> clipCursors, std::vector<anim::Transform>& pose) {
-            anim::SamplingJob{&library_, c.model, clip, cycle * library_.duration(c.model, clip), clipCursors, pose}.run();
+        auto sample = [&](std::uint32_t clip, std::span<std::uint16_t> clipCursors, std::vector<anim::SoaTransform>& pose) {
+            anim::SoaSamplingJob{&library_, c.model, clip, cycle * library_.duration(c.model, clip), clipCursors, pose}.run();
         };
         sample(state.clipTo, cursors.subspan(3u * joints), to);
         if (state.weight < 1.0f) {
             sample(state.clipFrom, cursors.first(3u * joints), from);
-            anim::BlendingJob{from, to, state.weight, to}.run();
+            anim::SoaBlendingJob{from, to, state.weight, to}.run();
         }
     }
     const anim::Affine placement = anim::placementAffine(state.position, state.heading, c.scale);
-    anim::PaletteJob{&library_, c.model, placement, to, world.empty() ? std::span<anim::Affine>(modelSpace) : world,
-                     out.first(joints)}.run();
+    anim::SoaPaletteJob{&library_, c.model, placement, to, world.empty() ? std::span<anim::Affine>(modelSpace) : world,
+                        out.first(joints)}.run();
 }
 
 void Crowd::animate(double time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,
