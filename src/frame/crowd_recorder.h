@@ -67,6 +67,9 @@ struct RecorderOptions {
 // The mesh-level cap in effect: options.meshCapacity when impostors are on from the start to take the
 // characters beyond it and it is below the crowd's size, else 0 (no cap).
 std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::Crowd& crowd);
+// The most characters a frame lists at a mesh level (DrawLists::drawCapacity): the mesh slots, and
+// the bone blocks when they belong to slots.
+std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crowd);
 
 // Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):
 // draw with the method's vertices and the geometry pool's indices from the indirect commands.
@@ -110,7 +113,8 @@ public:
     const render::CullSettings& cull() const { return cull_; }
     void setShadows(bool on) { shadows_ = on; }
     bool shadows() const { return shadows_; }
-    void setAnimation(render::AnimationPath path) { animation_ = path; }
+    // A method or path whose bone blocks belong to others (skin::boneBlocksFor) reallocates the bones.
+    void setAnimation(render::AnimationPath path);
     render::AnimationPath animation() const { return animation_; }
 
     std::uint32_t framesInFlight() const { return framesInFlight_; }
@@ -145,6 +149,9 @@ private:
     void enableImpostors();
     void updateUniforms(std::uint32_t slot, const render::FrameView& view);
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
+    // The method and path from now on, with the bone blocks they need.
+    void switchTo(skin::Method method, render::AnimationPath path);
+    void useBoneBlocks(render::BoneBlocks blocks);
 
     const gpu::VulkanContext& context_;
     crowd::Crowd& crowd_;

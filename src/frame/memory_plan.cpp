@@ -58,7 +58,10 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
     MemoryPlan plan;
     plan.items = {{"geometry pool (vertices, LOD indices, textures)", geometryBytes(crowd)},
                   {"character records and bone matrices",
-                   crowd.size() * sizeof(gpu::CharacterRecord) + render::planBones(context, crowd).bytes()},
+                   crowd.size() * sizeof(gpu::CharacterRecord) +
+                       render::planBones(context, crowd, skin::boneBlocksFor(options.method, options.animation),
+                                         meshSlots(options, crowd))
+                           .bytes()},
                   {"clip library (GPU animation)", libraryBytes(crowd.library())},
                   {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
                   {"culling lists and draw commands",

@@ -71,6 +71,7 @@ struct EmitPush {
     std::uint32_t fixedLayout;
     std::uint32_t characterDraws;
     std::uint32_t shadowDrawBase;
+    std::uint32_t slotBoneRows;
 };
 
 constexpr VkPipelineStageFlags2 kConsumers =
@@ -157,7 +158,8 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     const VkDescriptorSet set = descriptors_->set();
     const auto dynamicOffset = static_cast<std::uint32_t>(offset);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 1, &dynamicOffset);
-    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity()};
+    // Bone blocks per mesh slot: the emit pass gives each listed character its slot's block.
+    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity(), crowd_.slotBoneRows()};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     if (mode != CullMode::Cpu) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);
