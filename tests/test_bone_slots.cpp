@@ -3,12 +3,14 @@
 // allocation; the methods and the path that need every character's bones keep a block each; and a
 // character whose slot changes between frames still skins with its own pose (the CPU reference).
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <span>
 
 #include <gtest/gtest.h>
 
+#include "crowdgpu/renderer.hpp"
 #include "frame/memory_plan.h"
 #include "skin/cpu_skinning.h"
 #include "support/gpu_test.h"
@@ -152,6 +154,35 @@ TEST_F(GpuTest, SwitchingToTheVsBaselineOrTheCpuPathGivesEveryCharacterABoneBloc
     // The first frame's time again, after all that: the first frame's picture.
     time = 0.5f;
     EXPECT_GT(test::fractionOfMatchingPixels(slots, frame(), 2), 0.995);
+}
+
+// What memoryNeeded says the crowd needs: 10,000,000 soldiers, impostors on, the default mesh
+// capacity (65,536), shadows on, `compute`. Above the capacity every item grows by a fixed amount per
+// character (records, motion segments, LOD and shadow states, impostor lists, the cut's lists and tie
+// bits), so two crowds' figures give that amount and the 10,000,000 figure exactly (a third crowd
+// checks that the growth is linear); building a crowd of 10,000,000 here would take gigabytes of host
+// memory. The amount per far character must be at most 200 bytes, the whole under 4 GiB.
+TEST_F(GpuTest, TenMillionSoldiersWithImpostorsNeedUnderFourGibibytes) {
+    crowdgpu::RendererSettings settings;
+    settings.method = crowdgpu::Method::Compute;
+    settings.impostors = true;
+    ASSERT_EQ(settings.meshCapacity, 65536u);
+    ASSERT_TRUE(settings.shadows);
+    auto needed = [&](std::uint32_t count) {
+        crowdgpu::GridLayout layout;
+        layout.count = count;
+        const crowdgpu::Crowd crowd = crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+        return static_cast<double>(crowdgpu::memoryNeeded(context->physicalDevice, crowd, settings));
+    };
+    const double small = needed(200000), middle = needed(300000), large = needed(400000);
+    const double perCharacter = (large - small) / 200000.0;
+    EXPECT_NEAR(middle, 0.5 * (small + large), 64.0) << "linear above the capacity";
+    const double tenMillion = large + perCharacter * (10000000.0 - 400000.0);
+    std::printf("memoryNeeded, compute, impostors, capacity 65,536: %.0f bytes at 200,000; %.2f bytes per far "
+                "character; %.0f bytes (%.3f GiB) at 10,000,000\n",
+                small, perCharacter, tenMillion, tenMillion / 1073741824.0);
+    EXPECT_LE(perCharacter, 200.0);
+    EXPECT_LT(tenMillion, 4.0 * 1073741824.0);
 }
 
 // Draw i of the last frame: its character.

@@ -280,8 +280,12 @@ void Renderer::setImpostors(bool on) {
 }
 
 void Renderer::setAnimation(Animation animation) {
-    data_->frame->setAnimation(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
-    data_->settings.animation = animation;
+    // The CPU path needs a bone block per character: the bones may be reallocated, or refused.
+    detail::translated([&] {
+        data_->frame->setAnimation(animation == Animation::Cpu ? render::AnimationPath::Cpu
+                                                               : render::AnimationPath::Gpu);
+        data_->settings.animation = animation;
+    });
 }
 
 void Renderer::setLevels(const float lodThresholds[2], float lodHysteresis, float impostorThreshold) {

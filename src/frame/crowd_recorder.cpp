@@ -37,7 +37,8 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       pool_(context, crowd.models()),
       buffers_(context, crowd, options.framesInFlight, skin::boneBlocksFor(options.method, options.animation),
                meshSlots(options, crowd)),
-      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityInEffect(options, crowd)),
+      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityInEffect(options, crowd),
+             options.method == skin::Method::VertexShader),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
       maxTargetDimension_(options.maxTargetDimension),
@@ -248,15 +249,23 @@ void CrowdRecorder::switchTo(skin::Method method, render::AnimationPath path) {
         method_.reset();  // its buffers go before the next method's come
         try {
             useBoneBlocks(blocks);
+            useCharacterDraws(method == skin::Method::VertexShader);
             method_ = createMethod(method);
         } catch (...) {
             // Refused (the bones or the method do not fit): the renderer stays as it was.
             useBoneBlocks(skin::boneBlocksFor(previous, animation_));
+            useCharacterDraws(previous == skin::Method::VertexShader);
             method_ = createMethod(previous);
             throw;
         }
     }
     animation_ = path;
+}
+
+void CrowdRecorder::useCharacterDraws(bool on) {
+    if (on == lists_.hasCharacterDraws()) return;
+    lists_.setCharacterDraws(on);
+    cullPass_.rebindCharacterDraws();
 }
 
 void CrowdRecorder::useBoneBlocks(render::BoneBlocks blocks) {

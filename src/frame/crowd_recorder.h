@@ -133,7 +133,7 @@ public:
     // Device memory of the crowd's buffers and the method's resources.
     std::vector<skin::MemoryItem> memory() const;
     // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
-    // impostor-list entry, the vs baseline's draw slot; with a mesh-level cap, the cut's candidate and
+    // impostor-list entries, the vs baseline's draw slots (vs only); with a mesh-level cap, the cut's candidate and
     // boundary entries and tie bit), "bones" (its bone block), "mesh slots" (visible lists, draws and the
     // method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas shared
     // by all), "fixed" (geometry, clip library, shadow map, impostor quads, the cut's size histograms).
@@ -152,6 +152,8 @@ private:
     // The method and path from now on, with the bone blocks they need.
     void switchTo(skin::Method method, render::AnimationPath path);
     void useBoneBlocks(render::BoneBlocks blocks);
+    // The vs baseline's per-character draws, made for it alone.
+    void useCharacterDraws(bool on);
 
     const gpu::VulkanContext& context_;
     crowd::Crowd& crowd_;

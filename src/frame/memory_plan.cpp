@@ -65,7 +65,8 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                   {"clip library (GPU animation)", libraryBytes(crowd.library())},
                   {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
                   {"culling lists and draw commands",
-                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd))},
+                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd),
+                                               options.method == skin::Method::VertexShader)},
                   {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
     if (options.cull.impostors) {
         std::vector<gpu::ModelRecord> records(crowd.models().size());
