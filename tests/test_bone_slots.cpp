@@ -99,7 +99,9 @@ double worstListedBones(const gpu::VulkanContext& context, const test::TestRende
     for (const std::vector<std::uint32_t>& bucket : test::readVisibleLists(context, renderer))
         for (std::uint32_t c : bucket) {
             const model::SkinnedModel& m = crowd.modelOf(c);
-            if (perCharacter) EXPECT_EQ(records[c].ids.y, renderer.buffers().boneOffsets()[c]) << "character " << c;
+            if (perCharacter) {
+                EXPECT_EQ(records[c].ids.y, renderer.buffers().boneOffsets()[c]) << "character " << c;
+            }
             std::vector<gpu::BoneRows> cpu(m.skeleton.jointCount());
             crowd.animateCharacter(c, time, cpu);
             const std::span<const gpu::BoneRows> gpu(gpuBones + records[c].ids.y, cpu.size());
