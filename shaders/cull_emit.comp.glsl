@@ -9,6 +9,11 @@
 // range, a prefix of its skinned level's vertices (cull.glsl.inc, shadowState), appended after the
 // colour draws in any order (a depth-only pass does not depend on it). A character skinned only for
 // its shadow (out of view) keeps its colour draw with no instance, so the colour pass skips it.
+//
+// Bone blocks per mesh slot (render/crowd_buffers.h, BoneBlocks): draw i's character owns bone block i
+// this frame, and its record's ids.y says so, for the palette pass that writes the block and every
+// skinning method that reads it (they run after this pass). Characters not listed keep a stale ids.y
+// that nothing reads.
 #include "gpu_types.h"
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
@@ -17,9 +22,10 @@ layout(push_constant) uniform Push {
     uint fixedLayout;       // 1: every character has its own skinned slot (the static method)
     uint characterDrawsOn;  // 1: write the per-character draws too
     uint shadowDrawBase;    // where the shadow draws start in `draws` (its colour draws' capacity)
+    uint slotBoneRows;      // BoneRows per mesh slot's bone block; 0: blocks per character (ids.y fixed)
 };
 layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
-layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
+layout(std430, set = 0, binding = 2) buffer Characters { CharacterRecord characters[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Buckets { BucketRecord buckets[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Frames { BucketFrame frames[]; };
 layout(std430, set = 0, binding = 5) readonly buffer Visible { uint visible[]; };
@@ -45,6 +51,7 @@ void main() {
         uint vertexOffset = fixedLayout != 0u ? bucket.fixedLayout.x + characters[c].ids.z * bucket.mesh.z
                                               : frames[b].vertexBase + k * bucket.mesh.z;
         draws[i] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(vertexOffset), c);
+        if (slotBoneRows != 0u) characters[c].ids.y = i * slotBoneRows;
         if (casts)
             draws[shadowDrawBase + atomicAdd(totals.shadowDrawCount, 1u)] =
                 DrawIndexedCommand(shadowBucket.mesh.y, 1u, shadowBucket.mesh.x, int(vertexOffset), c);

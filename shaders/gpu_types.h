@@ -72,7 +72,9 @@ struct ModelRecord {
 struct CharacterRecord {
     vec4 placement;  // xyz: world position of the model's origin, w: heading (radians about +y; 0 faces +z)
     vec4 tint;       // rgb: colour multiplier (variety), w: uniform scale
-    uvec4 ids;       // x: model, y: first BoneRows of its bone block, z: rank among its model's
+    uvec4 ids;       // x: model, y: first BoneRows of its bone block (blocks per mesh slot: this frame's
+                     // slot's, written by the emit pass for the characters it lists; per character:
+                     // its own, fixed; render/crowd_buffers.h, BoneBlocks), z: rank among its model's
                      // characters, w: its clips: bits 0-15 the clip it fades from, 16-31 the clip it
                      // fades to (the same clip twice when it plays one)
     vec4 pose;       // x: normalized phase in cycles (both clips of a crossfade are at the same point of

@@ -498,12 +498,14 @@ PaletteError comparePalettes(const gpu::VulkanContext& context, crowd::Crowd& cr
     renderer.finish();
     const std::vector<std::byte> bytes = test::readBuffer(context, renderer.buffers().bones());
     const auto* gpuBones = reinterpret_cast<const gpu::BoneRows*>(bytes.data());
+    // Where each character's block is this frame (its mesh slot's: the record's ids.y).
+    const std::vector<gpu::CharacterRecord> records = test::readCharacterRecords(context, renderer);
     PaletteError error;
     for (std::uint32_t c = 0; c < crowd.size(); ++c) {
         const model::SkinnedModel& m = crowd.modelOf(c);
         std::vector<gpu::BoneRows> cpu(m.skeleton.jointCount());
         crowd.animateCharacter(c, time, cpu);
-        const std::span<const gpu::BoneRows> gpu(gpuBones + renderer.buffers().boneOffsets()[c], cpu.size());
+        const std::span<const gpu::BoneRows> gpu(gpuBones + records[c].ids.y, cpu.size());
         const std::vector<skin::CpuSkinnedVertex> a = skin::skinOnCpu(m, cpu), b = skin::skinOnCpu(m, gpu);
         const double height = m.height() * crowd.characters()[c].scale;
         for (std::size_t v = 0; v < a.size(); ++v)

@@ -102,8 +102,55 @@ TEST(StorageRanges, TheViewersLimitIsTheMostThatFits) {
     const std::uint64_t twoPass = skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::TwoPass, 0);
     EXPECT_GT(twoPass, 100000u);
     EXPECT_EQ(refusal(SoldierCrowd(static_cast<std::uint32_t>(twoPass)).crowd, skin::Method::TwoPass), "");
-    // With a cap that fits, the skinned vertices no longer bound it.
-    EXPECT_EQ(skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::Compute, 10000), twoPass);
+    // With a cap that fits, neither the skinned vertices nor the bones (a block per mesh slot) bound it:
+    // the character records do, 64 bytes each. The CPU path keeps a bone block per character.
+    EXPECT_EQ(skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::Compute, 10000),
+              kLavapipeRange / sizeof(gpu::CharacterRecord));
+    EXPECT_EQ(skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::Compute, 10000,
+                                                render::AnimationPath::Cpu),
+              skin::maxCharactersInStorageRange(limits, crowd.crowd, skin::Method::VertexShader, 10000));
+}
+
+// Bone blocks per mesh slot (issue 18): over the mesh capacity the bones stop growing, so a crowd whose
+// per-character blocks would pass the range fits with the GPU methods; vs and the CPU path, which keep
+// a block per character, are refused in one line naming the bones.
+TEST(StorageRanges, BonesPerMeshSlotStopGrowingAtTheMeshCapacity) {
+    const SoldierCrowd crowd(140000);  // per-character blocks: at most 133,151 soldiers in 128 MiB
+    EXPECT_EQ(refusal(crowd.crowd, skin::Method::Compute, 10000), "");
+    EXPECT_EQ(refusal(crowd.crowd, skin::Method::VertexShaderInstanced, 10000), "");
+    for (skin::Method m : {skin::Method::VertexShader, skin::Method::Compute}) {
+        std::string message;
+        try {
+            skin::checkStorageRanges(lavapipeLimits(), crowd.crowd, m, 10000,
+                                     m == skin::Method::Compute ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
+        } catch (const std::exception& e) {
+            message = e.what();
+        }
+        EXPECT_EQ(message.rfind("a crowd of 140000 characters: " + std::string(skin::methodName(m)) + " binds ", 0), 0u)
+            << message;
+        EXPECT_NE(message.find("of bone matrices as one storage buffer, over this device's limit of 128.0 MiB"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("at most 133151 of these characters fit"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+}
+
+// 10,000,000 soldiers with impostors and the default mesh capacity on the H100's limits (4 GiB of
+// storage-buffer range: 4,000,000 soldiers' aligned bone blocks, 4.6 GB, passed it there, their packed
+// ones, 4.0 GB, did not): every GPU method's bindings fit; vs's per-character bones do not.
+TEST(StorageRanges, TenMillionSoldiersFitTheH100sRangesWithBonesPerMeshSlot) {
+    VkPhysicalDeviceLimits h100{};
+    h100.maxStorageBufferRange = 0xFFFFFFFFu;
+    h100.minUniformBufferOffsetAlignment = 64;
+    h100.minStorageBufferOffsetAlignment = 16;
+    const SoldierCrowd mix(1000);  // the most of this mix that fit, whatever the crowd's own size
+    for (skin::Method m : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect,
+                           skin::Method::VertexShaderInstanced})
+        EXPECT_GE(skin::maxCharactersInStorageRange(h100, mix.crowd, m, 65536), 10000000u) << skin::methodName(m);
+    EXPECT_LT(skin::maxCharactersInStorageRange(h100, mix.crowd, skin::Method::VertexShader, 65536), 10000000u);
+    EXPECT_LT(skin::maxCharactersInStorageRange(h100, mix.crowd, skin::Method::Compute, 65536, render::AnimationPath::Cpu),
+              10000000u);
 }
 
 TEST(StorageRanges, CrowdRenderRefusesInOneLineWhatTheDeviceCannotBindAndTwoPassDrawsItWithValidationSilent) {

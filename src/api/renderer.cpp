@@ -131,8 +131,10 @@ DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd&
         const crowd::Crowd& internal = crowd.data().crowd();
         const std::uint32_t capacity = frame::meshCapacityInEffect(options, internal);
         DeviceLimitCheck check;
-        check.mostCharacters = skin::maxCharactersInStorageRange(properties.limits, internal, options.method, capacity);
-        if (const auto problem = skin::storageRangeProblem(properties.limits, internal, options.method, capacity)) {
+        check.mostCharacters =
+            skin::maxCharactersInStorageRange(properties.limits, internal, options.method, capacity, options.animation);
+        if (const auto problem =
+                skin::storageRangeProblem(properties.limits, internal, options.method, capacity, options.animation)) {
             check.problem = problem->message;
             check.meshCapacityBound = problem->meshCapacityBound;
         }
@@ -158,7 +160,7 @@ Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::Re
                             " of device memory with these settings; " + data->context->description.name + " has " +
                             gpu::formatBytes(available));
         skin::checkStorageRanges(data->context->properties.limits, crowd, options.method,
-                                 frame::meshCapacityInEffect(options, crowd));
+                                 frame::meshCapacityInEffect(options, crowd), options.animation);
         data->settings = settings;
         frame::RecorderOptions withOwner = options;
         withOwner.contextOwner = data->context;  // a shared atlas may outlive this renderer
@@ -289,8 +291,12 @@ void Renderer::setImpostors(bool on) {
 }
 
 void Renderer::setAnimation(Animation animation) {
-    data_->frame->setAnimation(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
-    data_->settings.animation = animation;
+    // The CPU path needs a bone block per character: the bones may be reallocated, or refused.
+    detail::translated([&] {
+        data_->frame->setAnimation(animation == Animation::Cpu ? render::AnimationPath::Cpu
+                                                               : render::AnimationPath::Gpu);
+        data_->settings.animation = animation;
+    });
 }
 
 void Renderer::setLevels(const float lodThresholds[2], float lodHysteresis, float impostorThreshold) {

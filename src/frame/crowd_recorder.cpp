@@ -24,14 +24,21 @@ std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::
                                                                                                     : 0u;
 }
 
+std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crowd) {
+    const std::uint32_t capacity = meshCapacityInEffect(options, crowd);
+    return capacity > 0 ? capacity : crowd.size();
+}
+
 CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options)
     : context_(context),
       crowd_(crowd),
       target_(options.target),
       framesInFlight_(checkedFramesInFlight(options.framesInFlight)),
       pool_(context, crowd.models()),
-      buffers_(context, crowd, options.framesInFlight),
-      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityInEffect(options, crowd)),
+      buffers_(context, crowd, options.framesInFlight, skin::boneBlocksFor(options.method, options.animation),
+               meshSlots(options, crowd)),
+      lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityInEffect(options, crowd),
+             options.method == skin::Method::VertexShader),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
       maxTargetDimension_(options.maxTargetDimension),
@@ -119,6 +126,7 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         buffers_.recordCpuAnimationUpload(cmd, slot);
         gpu::passDone(passes_, cmd, "upload");
     } else if (path == render::AnimationPath::Gpu) {
+        buffers_.recordRecordsUploadIfStale(cmd, slot);  // after bone blocks left the mesh slots
         animationPass_.recordMotion(cmd, slot, view.time);
         gpu::passDone(passes_, cmd, "motion");
     }
@@ -252,10 +260,42 @@ void CrowdRecorder::enableImpostors() {
                                                            target_);
 }
 
-void CrowdRecorder::setMethod(skin::Method method) {
-    if (shadowRaster_) shadowRaster_->forgetVertices();  // the new method's buffer may reuse the old handle
-    method_.reset();
-    method_ = createMethod(method);
+void CrowdRecorder::setMethod(skin::Method method) { switchTo(method, animation_); }
+
+void CrowdRecorder::setAnimation(render::AnimationPath path) { switchTo(method_->method(), path); }
+
+void CrowdRecorder::switchTo(skin::Method method, render::AnimationPath path) {
+    const skin::Method previous = method_->method();
+    const render::BoneBlocks blocks = skin::boneBlocksFor(method, path);
+    if (method != previous || blocks != buffers_.boneBlocks()) {
+        if (shadowRaster_) shadowRaster_->forgetVertices();  // the next method's buffer may reuse the handle
+        method_.reset();  // its buffers go before the next method's come
+        try {
+            useBoneBlocks(blocks);
+            useCharacterDraws(method == skin::Method::VertexShader);
+            method_ = createMethod(method);
+        } catch (...) {
+            // Refused (the bones or the method do not fit): the renderer stays as it was.
+            useBoneBlocks(skin::boneBlocksFor(previous, animation_));
+            useCharacterDraws(previous == skin::Method::VertexShader);
+            method_ = createMethod(previous);
+            throw;
+        }
+    }
+    animation_ = path;
+}
+
+void CrowdRecorder::useCharacterDraws(bool on) {
+    if (on == lists_.hasCharacterDraws()) return;
+    lists_.setCharacterDraws(on);
+    cullPass_.rebindCharacterDraws();
+}
+
+void CrowdRecorder::useBoneBlocks(render::BoneBlocks blocks) {
+    if (blocks == buffers_.boneBlocks()) return;
+    buffers_.setBoneBlocks(blocks);
+    animationPass_.rebindBones(buffers_);
+    draw_.rebindBones();
 }
 
 std::vector<skin::MemoryItem> CrowdRecorder::memory() const {

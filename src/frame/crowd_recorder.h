@@ -70,6 +70,9 @@ struct RecorderOptions {
 // The mesh-level cap in effect: options.meshCapacity when impostors are on from the start to take the
 // characters beyond it and it is below the crowd's size, else 0 (no cap).
 std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::Crowd& crowd);
+// The most characters a frame lists at a mesh level (DrawLists::drawCapacity): the mesh slots, and
+// the bone blocks when they belong to slots.
+std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crowd);
 
 // Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):
 // draw with the method's vertices and the geometry pool's indices from the indirect commands.
@@ -119,7 +122,8 @@ public:
     // method's skinned vertices can be read by it).
     bool rastersShadowsInCompute() const;
     const render::ShadowMap& shadowMap() const { return shadowMap_; }
-    void setAnimation(render::AnimationPath path) { animation_ = path; }
+    // A method or path whose bone blocks belong to others (skin::boneBlocksFor) reallocates the bones.
+    void setAnimation(render::AnimationPath path);
     render::AnimationPath animation() const { return animation_; }
 
     std::uint32_t framesInFlight() const { return framesInFlight_; }
@@ -138,8 +142,9 @@ public:
     // Device memory of the crowd's buffers and the method's resources.
     std::vector<skin::MemoryItem> memory() const;
     // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
-    // impostor-list entry, the vs baseline's draw slot; with a mesh-level cap, the cut's candidate and
-    // boundary entries and tie bit), "bones" (its bone block), "mesh slots" (visible lists, draws and the
+    // impostor-list entries, the vs baseline's draw slots (vs only); with a mesh-level cap, the cut's
+    // candidate and boundary entries and tie bit), "bones" (the mesh slots' bone blocks, or a block per
+    // character with vs, static and the CPU path: render::BoneBlocks), "mesh slots" (visible lists, draws and the
     // method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas shared
     // by all), "fixed" (geometry, clip library, shadow map, impostor quads, the cut's size histograms).
     std::map<std::string, double> memoryPerCharacter() const;
@@ -154,6 +159,11 @@ private:
     void enableImpostors();
     void updateUniforms(std::uint32_t slot, const render::FrameView& view);
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
+    // The method and path from now on, with the bone blocks they need.
+    void switchTo(skin::Method method, render::AnimationPath path);
+    void useBoneBlocks(render::BoneBlocks blocks);
+    // The vs baseline's per-character draws, made for it alone.
+    void useCharacterDraws(bool on);
 
     const gpu::VulkanContext& context_;
     crowd::Crowd& crowd_;

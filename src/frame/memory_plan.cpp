@@ -58,11 +58,15 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
     MemoryPlan plan;
     plan.items = {{"geometry pool (vertices, LOD indices, textures)", geometryBytes(crowd)},
                   {"character records and bone matrices",
-                   crowd.size() * sizeof(gpu::CharacterRecord) + render::planBones(context, crowd).bytes()},
+                   crowd.size() * sizeof(gpu::CharacterRecord) +
+                       render::planBones(context, crowd, skin::boneBlocksFor(options.method, options.animation),
+                                         meshSlots(options, crowd))
+                           .bytes()},
                   {"clip library (GPU animation)", libraryBytes(crowd.library())},
                   {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
                   {"culling lists and draw commands",
-                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd))},
+                   render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd),
+                                               options.method == skin::Method::VertexShader)},
                   {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
     if (options.shadowRaster == render::ShadowRasterPath::Compute)
         plan.items.push_back({"shadow map depth (compute raster)", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4});

@@ -24,6 +24,10 @@ DescriptorBundle::DescriptorBundle(const VulkanContext& context, VkShaderStageFl
                               bindings[i].range);
 }
 
+void DescriptorBundle::rebind(std::uint32_t index, const BufferBinding& binding) {
+    writeBufferDescriptor(context_, set_, index, binding.type, binding.buffer, binding.offset, binding.range);
+}
+
 DescriptorBundle::~DescriptorBundle() {
     vkDestroyDescriptorPool(context_.device, pool_, nullptr);
     vkDestroyDescriptorSetLayout(context_.device, layout_, nullptr);

@@ -1,5 +1,6 @@
 #pragma once
 // One descriptor set of buffers with its own layout and pool: what each pass binds besides the scene.
+#include <cstdint>
 #include <span>
 
 #include <vulkan/vulkan.h>
@@ -22,6 +23,10 @@ public:
     ~DescriptorBundle();
     DescriptorBundle(const DescriptorBundle&) = delete;
     DescriptorBundle& operator=(const DescriptorBundle&) = delete;
+
+    // Points binding `index` at another buffer of the same type (a reallocated one). Only while no
+    // command buffer that binds the set is pending or being recorded (between frames, the GPU idle).
+    void rebind(std::uint32_t index, const BufferBinding& binding);
 
     VkDescriptorSetLayout layout() const { return layout_; }
     VkDescriptorSet set() const { return set_; }

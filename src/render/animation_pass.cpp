@@ -18,6 +18,8 @@ namespace {
 
 // The palette pass's threads per workgroup (palette.comp.glsl): a group takes this many joints.
 constexpr std::uint32_t kPaletteThreads = 64;
+// The bones' binding in the palette set (palette.comp.glsl).
+constexpr std::uint32_t kPaletteBonesBinding = 10;
 
 constexpr gpu::Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
@@ -109,6 +111,10 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
 }
 
 AnimationPass::~AnimationPass() { release(); }
+
+void AnimationPass::rebindBones(const CrowdBuffers& buffers) {
+    paletteSet_->rebind(kPaletteBonesBinding, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers.bones().buffer});
+}
 
 void AnimationPass::release() {
     for (VkPipeline* p : {&scatter_, &paletteDispatch_, &paletteLarge_, &palette_, &motion_}) {

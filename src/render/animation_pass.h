@@ -43,6 +43,9 @@ public:
     // After culling: the bones of every listed character, ready for skinning and drawing.
     void recordPalettes(VkCommandBuffer cmd);
 
+    // The bones were reallocated (CrowdBuffers::setBoneBlocks): the palette pass writes the new buffer.
+    void rebindBones(const CrowdBuffers& buffers);
+
     // Device bytes: the library (once per crowd) and the segments (64 per character).
     std::uint64_t libraryBytes() const { return libraryBytes_; }
     std::uint64_t segmentBytes() const { return motions_.size; }

@@ -1,5 +1,6 @@
 #include "render/character_draw.h"
 
+#include <iterator>
 #include <string>
 
 #include "draw.frag.spv.h"
@@ -16,6 +17,8 @@ namespace render {
 namespace {
 
 constexpr VkShaderStageFlags kDrawStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+// The bones' binding in the crowd set (shaders/crowd_set.glsl.inc).
+constexpr std::uint32_t kCrowdSetBonesBinding = 3;
 
 // The paper's baseline binds one character's bones per draw: a uniform range of the largest block.
 gpu::BufferBinding boneBlockBinding(const gpu::VulkanContext& context, const CrowdBuffers& crowd) {
@@ -37,6 +40,7 @@ CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPo
                                                     {storage, crowd.characters().buffer},
                                                     {storage, lists.visible().buffer},
                                                     {storage, crowd.bones().buffer}};
+        static_assert(std::size(crowdBindings) == kCrowdSetBonesBinding + 1, "the bones are the crowd set's last binding");
         crowdSet_ = std::make_unique<gpu::DescriptorBundle>(context, kDrawStages, crowdBindings);
         const gpu::BufferBinding block[] = {boneBlockBinding(context, crowd)};
         boneBlock_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, block);
@@ -48,6 +52,11 @@ CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPo
 }
 
 CharacterDraw::~CharacterDraw() { release(); }
+
+void CharacterDraw::rebindBones() {
+    crowdSet_->rebind(kCrowdSetBonesBinding, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, crowd_.bones().buffer});
+    boneBlock_->rebind(0, boneBlockBinding(context_, crowd_));
+}
 
 void CharacterDraw::release() {
     for (VkPipeline* pipelines : {colour_, shadow_})

@@ -52,6 +52,9 @@ public:
     void record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices, VkDescriptorSet sceneSet,
                 const ScenePush& push, Target target = Target::Colour) const;
 
+    // The bones were reallocated (CrowdBuffers::setBoneBlocks): both sets bind the new buffer.
+    void rebindBones();
+
 private:
     void createPipelines(VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target);
     // The three pipelines (skinned, per character, instanced) for one target's formats.

@@ -40,11 +40,17 @@ BoneLayout planBones(const crowd::Crowd& crowd, const std::vector<std::uint32_t>
 
 }  // namespace
 
-BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd) {
-    return planBones(context.properties.limits, crowd);
+const char* boneBlocksName(BoneBlocks blocks) {
+    return blocks == BoneBlocks::PerMeshSlot ? "per mesh slot" : "per character";
 }
 
-BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd) {
+BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd, BoneBlocks blocks,
+                     std::uint32_t slots) {
+    return planBones(context.properties.limits, crowd, blocks, slots);
+}
+
+BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, BoneBlocks blocks,
+                     std::uint32_t slots) {
     std::vector<std::uint32_t> aligned, tight;
     for (const model::SkinnedModel* m : crowd.models()) {
         tight.push_back(static_cast<std::uint32_t>(m->skeleton.jointCount()));
@@ -55,6 +61,12 @@ BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& c
     if (layout.bytes() > limits.maxStorageBufferRange) {
         layout = planBones(crowd, tight);
         layout.aligned = false;
+    }
+    if (blocks == BoneBlocks::PerMeshSlot) {
+        // The per-character layout's block size, so the vs baseline's pipeline and uniform range (made
+        // for the largest block) stay valid across a switch between the two.
+        layout.blocks = BoneBlocks::PerMeshSlot;
+        layout.totalRows = std::uint64_t{std::max(slots, 1u)} * layout.largestBlock;
     }
     return layout;
 }
@@ -72,15 +84,9 @@ std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, st
     return records;
 }
 
-CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t framesInFlight)
-    : context_(context), layout_(planBones(context, crowd)) {
-    const VkDeviceSize boneBytes = layout_.bytes();
-    // Offsets are 32-bit BoneRows indices in the shaders; the storage range bounds what one binding sees.
-    if (boneBytes > context.properties.limits.maxStorageBufferRange || layout_.totalRows > UINT32_MAX)
-        throw gpu::Error("a crowd of " + std::to_string(crowd.size()) + " characters: bone matrices need " +
-                         gpu::formatBytes(boneBytes) + ", over this device's storage-buffer limit of " +
-                         gpu::formatBytes(context.properties.limits.maxStorageBufferRange),
-                         gpu::ErrorKind::OutOfDeviceMemory);
+CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t framesInFlight,
+                           BoneBlocks blocks, std::uint32_t slots)
+    : context_(context), crowd_(crowd), slots_(slots), layout_(planBones(context, crowd, blocks, slots)) {
     records_ = characterRecords(crowd, layout_.offsets);
     try {
         // Transfer source too: tests read back the records the motion pass wrote.
@@ -88,15 +94,41 @@ CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd
                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                                 "character records");
-        bones_ = gpu::createBuffer(context, boneBytes,
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                   gpu::MemoryUse::DeviceLocal, "bone matrices");
+        bones_ = allocateBones(layout_);
         staging_.resize(framesInFlight);
     } catch (...) {
         release();
         throw;
     }
+}
+
+gpu::Buffer CrowdBuffers::allocateBones(const BoneLayout& layout) const {
+    const VkDeviceSize boneBytes = layout.bytes();
+    // Offsets are 32-bit BoneRows indices in the shaders; the storage range bounds what one binding sees.
+    if (boneBytes > context_.properties.limits.maxStorageBufferRange || layout.totalRows > UINT32_MAX)
+        throw gpu::Error("a crowd of " + std::to_string(crowd_.size()) + " characters: bone matrices (" +
+                             boneBlocksName(layout.blocks) + ") need " + gpu::formatBytes(boneBytes) +
+                             ", over this device's storage-buffer limit of " +
+                             gpu::formatBytes(context_.properties.limits.maxStorageBufferRange),
+                         gpu::ErrorKind::OutOfDeviceMemory);
+    return gpu::createBuffer(context_, boneBytes,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT |
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             gpu::MemoryUse::DeviceLocal, "bone matrices");
+}
+
+void CrowdBuffers::setBoneBlocks(BoneBlocks blocks) {
+    if (blocks == layout_.blocks) return;
+    // The new buffer first: if it cannot be had, nothing changes.
+    BoneLayout next = planBones(context_, crowd_, blocks, slots_);
+    gpu::Buffer bones = allocateBones(next);
+    gpu::destroyBuffer(context_, bones_);
+    bones_ = bones;
+    // The bone staging is sized for the bones: made again on first use.
+    for (Staging& s : staging_) gpu::destroyBuffer(context_, s.bones);
+    // Per slot, the emit pass rewrites ids.y each frame; per character it must be the character's own.
+    recordsStale_ = layout_.blocks == BoneBlocks::PerMeshSlot;
+    layout_ = std::move(next);
 }
 
 CrowdBuffers::~CrowdBuffers() { release(); }
@@ -112,23 +144,25 @@ void CrowdBuffers::release() {
 }
 
 CrowdBuffers::Staging& CrowdBuffers::staging(std::uint32_t frameSlot) {
-    // Made the first time the CPU path runs: the GPU path never needs host copies of the bones.
+    // Made the first time the CPU path (or a records upload) runs: the GPU path never needs host copies.
     Staging& s = staging_[frameSlot];
-    if (!s.bones.buffer) {
-        s.bones = gpu::createBuffer(context_, bones_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::HostUpload,
-                                    "bone matrices (upload)");
+    if (!s.records.buffer)
         s.records = gpu::createBuffer(context_, characters_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                       gpu::MemoryUse::HostUpload, "character records (upload)");
-    }
     return s;
 }
 
 std::span<gpu::BoneRows> CrowdBuffers::boneStaging(std::uint32_t frameSlot) {
-    return {static_cast<gpu::BoneRows*>(staging(frameSlot).bones.mapped), static_cast<std::size_t>(layout_.totalRows)};
+    Staging& s = staging(frameSlot);
+    if (!s.bones.buffer)
+        s.bones = gpu::createBuffer(context_, bones_.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::HostUpload,
+                                    "bone matrices (upload)");
+    return {static_cast<gpu::BoneRows*>(s.bones.mapped), static_cast<std::size_t>(layout_.totalRows)};
 }
 
 void CrowdBuffers::recordCpuAnimationUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) {
     Staging& s = staging(frameSlot);
+    boneStaging(frameSlot);
     std::memcpy(s.records.mapped, records_.data(), records_.size() * sizeof(gpu::CharacterRecord));
     // The previous frames' passes must be done reading before the copies overwrite bones and records.
     gpu::memoryBarrier(cmd, {kCharacterReaders, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
@@ -138,6 +172,21 @@ void CrowdBuffers::recordCpuAnimationUpload(VkCommandBuffer cmd, std::uint32_t f
     vkCmdCopyBuffer(cmd, s.records.buffer, characters_.buffer, 1, &records);
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT});
+    recordsStale_ = false;
+}
+
+void CrowdBuffers::recordRecordsUploadIfStale(VkCommandBuffer cmd, std::uint32_t frameSlot) {
+    if (!recordsStale_) return;
+    // The CPU's records hold every character's own block in ids.y; their motion fields may be old, but
+    // the motion pass that follows rewrites those.
+    Staging& s = staging(frameSlot);
+    std::memcpy(s.records.mapped, records_.data(), records_.size() * sizeof(gpu::CharacterRecord));
+    gpu::memoryBarrier(cmd, {kCharacterReaders, 0}, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    const VkBufferCopy records{0, 0, characters_.size};
+    vkCmdCopyBuffer(cmd, s.records.buffer, characters_.buffer, 1, &records);
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                       {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    recordsStale_ = false;
 }
 
 void CrowdBuffers::updateRecords(const crowd::Crowd& crowd, double time) {

@@ -1,6 +1,7 @@
 #pragma once
 // The crowd's per-character GPU data: one gpu::CharacterRecord per character (placement, tint,
-// model, where its bones are) and the bone matrices of every character, uploaded each frame.
+// model, where its bones are) and the bone matrices: one block per mesh slot (the frame's draws), or
+// one per character where the frame needs every character's bones (BoneBlocks).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -25,9 +26,22 @@ constexpr VkPipelineStageFlags2 kCharacterReaders =
 std::uint32_t boneStrideFor(const gpu::VulkanContext& context, std::uint32_t jointCount);
 std::uint32_t boneStrideFor(const VkPhysicalDeviceLimits& limits, std::uint32_t jointCount);
 
-// Where every character's bone block starts (in BoneRows), and the buffer's size: blocks in character
-// order, then room for one more of the largest block, so the baseline's fixed uniform range (the
-// largest block) never reads past the end from the last character's offset.
+// Whom a bone block belongs to.
+//   PerMeshSlot: block i to the frame's draw i (DrawLists::draws), so at most the draw capacity (the
+//     mesh capacity) of blocks, whatever the crowd's size: the GPU palette pass writes the block of the
+//     slot a character got this frame, and the emit pass tells every reader where it is (ids.y of the
+//     character's record). A character at the impostor level, or culled, has no block.
+//   PerCharacter: block per character, fixed, at boneOffsets(): for what binds or writes bones
+//     without the frame's slots: the vs baseline (CPU-recorded offsets), the CPU animation path
+//     (uploads every character's bones) and the static method (skins every character once).
+enum class BoneBlocks { PerMeshSlot, PerCharacter };
+const char* boneBlocksName(BoneBlocks blocks);
+
+// Where every character's own bone block starts (in BoneRows), and the buffer's size. Per character:
+// blocks in character order, then room for one more of the largest block, so the baseline's fixed
+// uniform range (the largest block) never reads past the end from the last character's offset. Per
+// mesh slot: `slots` blocks of the largest block's size (a slot may hold any model); `offsets` still
+// gives the per-character layout, which a later switch to it (and the records' first ids.y) uses.
 struct BoneLayout {
     std::vector<std::uint32_t> offsets;
     std::uint32_t largestBlock = 0;  // BoneRows
@@ -35,22 +49,41 @@ struct BoneLayout {
     // Blocks at offsets a dynamic uniform binding may take (the vs method needs it); false when the
     // crowd's bones only fit the storage-buffer range packed tightly (joints x 48 bytes apiece).
     bool aligned = true;
+    BoneBlocks blocks = BoneBlocks::PerCharacter;
     std::uint64_t bytes() const { return totalRows * sizeof(gpu::BoneRows); }
+    // BoneRows between slot i's block and slot i + 1's (0 per character: blocks are at `offsets`).
+    std::uint32_t slotRows() const { return blocks == BoneBlocks::PerMeshSlot ? largestBlock : 0u; }
 };
-// Aligned blocks when they fit the device's storage-buffer range, else tightly packed ones.
-BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd);
-BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd);
+// Per character: aligned blocks when they fit the device's storage-buffer range, else tightly packed
+// ones. Per mesh slot: `slots` blocks of the per-character layout's largest block.
+BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crowd,
+                     BoneBlocks blocks = BoneBlocks::PerCharacter, std::uint32_t slots = 0);
+BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
+                     BoneBlocks blocks = BoneBlocks::PerCharacter, std::uint32_t slots = 0);
 
 // The GPU records of the crowd's characters.
 std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, std::span<const std::uint32_t> boneOffsets);
 
 class CrowdBuffers {
 public:
-    // Throws gpu::Error when the bones exceed the device's storage-buffer range or memory.
-    CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t framesInFlight);
+    // `slots`: the most characters a frame lists at a mesh level (DrawLists::drawCapacity), the blocks
+    // per mesh slot. Throws gpu::Error when the bones exceed the device's storage-buffer range or memory.
+    CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t framesInFlight,
+                 BoneBlocks blocks, std::uint32_t slots);
     ~CrowdBuffers();
     CrowdBuffers(const CrowdBuffers&) = delete;
     CrowdBuffers& operator=(const CrowdBuffers&) = delete;
+
+    // Between frames, with the GPU idle: reallocates the bones for the other kind of block (a new
+    // buffer: whoever binds bones() binds it again; when it cannot be had, it throws and nothing changes). Leaving per-slot blocks, the device's records hold
+    // slot offsets in ids.y: the next frame uploads the records first (recordRecordsUploadIfStale).
+    void setBoneBlocks(BoneBlocks blocks);
+    BoneBlocks boneBlocks() const { return layout_.blocks; }
+    // BoneRows from one slot's block to the next, for the emit pass (0: blocks per character).
+    std::uint32_t slotBoneRows() const { return layout_.slotRows(); }
+    // After a switch to per-character blocks, the device's records are uploaded again (their ids.y);
+    // the CPU animation path's upload does it too. No-op otherwise.
+    void recordRecordsUploadIfStale(VkCommandBuffer cmd, std::uint32_t frameSlot);
 
     // The CPU animation path: where it writes this frame's bone matrices (host-visible, mapped; made
     // on first use), and the copies of those bones and of records() to the device, with their barriers.
@@ -73,9 +106,14 @@ public:
 
 private:
     void release();
+    // A buffer for `layout`; throws when it is over the storage-buffer range.
+    gpu::Buffer allocateBones(const BoneLayout& layout) const;
 
     const gpu::VulkanContext& context_;
+    const crowd::Crowd& crowd_;
+    std::uint32_t slots_;
     BoneLayout layout_;
+    bool recordsStale_ = false;  // the device's ids.y hold slot offsets, per-character blocks need their own
     std::vector<gpu::CharacterRecord> records_;
     gpu::Buffer characters_;
     gpu::Buffer bones_;

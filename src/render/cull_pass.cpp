@@ -71,7 +71,11 @@ struct EmitPush {
     std::uint32_t fixedLayout;
     std::uint32_t characterDraws;
     std::uint32_t shadowDrawBase;
+    std::uint32_t slotBoneRows;
 };
+
+// The per-character draws' binding in the cull passes' set (cull_emit.comp.glsl).
+constexpr std::uint32_t kCharacterDrawsBinding = 11;
 
 constexpr VkPipelineStageFlags2 kConsumers =
     VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
@@ -123,6 +127,10 @@ CullPass::CullPass(const gpu::VulkanContext& context, const GeometryPool& pool, 
 
 CullPass::~CullPass() { release(); }
 
+void CullPass::rebindCharacterDraws() {
+    descriptors_->rebind(kCharacterDrawsBinding, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lists_.characterDraws().buffer});
+}
+
 void CullPass::release() {
     for (VkPipeline* p : {&resolve_, &split_, &cutoff_, &emit_, &finalize_, &cull_}) {
         if (*p) vkDestroyPipeline(context_.device, *p, nullptr);
@@ -140,6 +148,8 @@ VkPipeline CullPass::createPipeline(std::span<const std::uint32_t> spirv) {
 
 void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& cullUniforms,
                       CullMode mode, bool fixedLayout, bool characterDraws) {
+    if (characterDraws && !lists_.hasCharacterDraws())
+        throw gpu::Error("cull: per-character draws asked for, but the draw lists were made without them");
     gpu::CullUniforms uniforms = cullUniforms;
     uniforms.shadowFlags.y = lists_.shadowListBase();  // where the shadow lists start (cull_lists.glsl.inc)
     const VkDeviceSize offset = uniformStride_ * frameSlot;
@@ -157,7 +167,8 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     const VkDescriptorSet set = descriptors_->set();
     const auto dynamicOffset = static_cast<std::uint32_t>(offset);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 1, &dynamicOffset);
-    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity()};
+    // Bone blocks per mesh slot: the emit pass gives each listed character its slot's block.
+    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity(), crowd_.slotBoneRows()};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     if (mode != CullMode::Cpu) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);

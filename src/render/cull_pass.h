@@ -79,6 +79,9 @@ public:
     void record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::CullUniforms& uniforms, CullMode mode,
                 bool fixedLayout, bool characterDraws);
 
+    // The per-character draws were made or dropped (DrawLists::setCharacterDraws): bind the new buffer.
+    void rebindCharacterDraws();
+
     // The lodState of the CPU path (one per character: last level + 1, or 0).
     const std::vector<std::uint32_t>& cpuLodState() const { return cpuLodState_; }
 

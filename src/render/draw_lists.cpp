@@ -55,20 +55,23 @@ std::vector<gpu::BucketRecord> planBuckets(const gpu::VulkanContext& context, co
 
 }  // namespace
 
-std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity) {
-    // Per character: the baseline's two draw commands (colour, shadow), the LOD state, the shadow state
-    // and two impostor list entries (in view, casting); per mesh-level character (all, without a cap):
-    // visible-list and shadow-list entries (one each per LOD) and two draw commands; with a cap, the
-    // cut's histograms and per-character lists.
+std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity,
+                                  bool characterDraws) {
+    // Per character: the LOD state, the shadow state and two impostor list entries (in view, casting),
+    // and for the vs baseline its two draw commands (colour, shadow; else one command in all); per
+    // mesh-level character (all, without a cap): visible-list and shadow-list entries (one each per
+    // LOD) and two draw commands; with a cap, the cut's histograms and per-character lists.
     const std::uint64_t meshLevel = meshCapacity > 0 ? std::min<std::uint64_t>(characters, meshCapacity) : characters;
-    return characters * (2 * sizeof(gpu::DrawIndexedCommand) + 4 + 4 + 2 * 4) +
+    const std::uint64_t perCharacterDraws =
+        characterDraws ? 2 * std::max<std::uint64_t>(characters, 1) : 1;
+    return perCharacterDraws * sizeof(gpu::DrawIndexedCommand) + characters * (4 + 4 + 2 * 4) +
            meshLevel * 2 * (LOD_COUNT * 4 + sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
            buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + 2 * sizeof(gpu::DrawIndexedCommand) + 16) +
            meshCutSizes(characters, meshCapacity).total();
 }
 
 DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-                     std::uint32_t framesInFlight, std::uint32_t meshCapacity)
+                     std::uint32_t framesInFlight, std::uint32_t meshCapacity, bool characterDraws)
     : context_(context),
       buckets_(planBuckets(context, pool, crowd, meshCapacity, skinnedCapacity_, fixedCapacity_)),
       characterCount_(crowd.characterCount()),
@@ -94,8 +97,8 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
                                      "visible and shadow lists");
         draws_ = gpu::createBuffer(context, 2 * std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect,
                                    device, "draw commands");
-        characterDraws_ = gpu::createBuffer(context, 2 * n * sizeof(gpu::DrawIndexedCommand), indirect | filled, device,
-                                            "per-character draw commands");
+        characterDraws_ = createCharacterDraws(characterDraws);
+        characterDrawsOn_ = characterDraws;
         bucketDraws_ = gpu::createBuffer(context, 2 * b * sizeof(gpu::DrawIndexedCommand), indirect, device,
                                          "per-bucket draw commands");
         skinDispatches_ = gpu::createBuffer(context, b * sizeof(glm::uvec4), indirect, device, "skinning dispatches");
@@ -127,6 +130,23 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
 }
 
 DrawLists::~DrawLists() { release(); }
+
+gpu::Buffer DrawLists::createCharacterDraws(bool on) const {
+    // 20 bytes a character twice, 400 MB at 10,000,000: only the vs baseline draws from them.
+    const VkDeviceSize commands = on ? 2 * VkDeviceSize{std::max(characterCount_, 1u)} : 1;
+    return gpu::createBuffer(context_, commands * sizeof(gpu::DrawIndexedCommand),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             gpu::MemoryUse::DeviceLocal, "per-character draw commands");
+}
+
+void DrawLists::setCharacterDraws(bool on) {
+    if (on == characterDrawsOn_) return;
+    gpu::Buffer draws = createCharacterDraws(on);  // first: if it cannot be had, nothing changes
+    gpu::destroyBuffer(context_, characterDraws_);
+    characterDraws_ = draws;
+    characterDrawsOn_ = on;
+}
 
 void DrawLists::release() {
     for (gpu::Buffer& buffer : cpuStaging_) gpu::destroyBuffer(context_, buffer);

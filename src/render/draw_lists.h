@@ -54,14 +54,21 @@ public:
     // cap, the skinned-vertex capacity, the draw list and each bucket's list are sized for it, not for
     // the whole crowd; culling demotes the smallest on screen beyond it to impostors (the cut's buffers,
     // render/mesh_cut.h).
+    // `characterDraws`: the vs baseline's per-character draws are made (two per character); else the
+    // buffer is one command long, until setCharacterDraws(true).
     DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
-              std::uint32_t framesInFlight, std::uint32_t meshCapacity = 0);
+              std::uint32_t framesInFlight, std::uint32_t meshCapacity = 0, bool characterDraws = true);
     ~DrawLists();
     DrawLists(const DrawLists&) = delete;
     DrawLists& operator=(const DrawLists&) = delete;
 
     // Device bytes these lists take for a crowd of this size and bucket count (checked before allocating).
-    static std::uint64_t bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity = 0);
+    static std::uint64_t bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity = 0,
+                                  bool characterDraws = true);
+    // Between frames, with the GPU idle: makes or drops the per-character draws (a new buffer, which
+    // the cull pass binds again: CullPass::rebindCharacterDraws). Only the vs baseline reads them.
+    void setCharacterDraws(bool on);
+    bool hasCharacterDraws() const { return characterDrawsOn_; }
 
     std::uint32_t bucketCount() const { return static_cast<std::uint32_t>(buckets_.size()); }
     const std::vector<gpu::BucketRecord>& buckets() const { return buckets_; }
@@ -78,7 +85,8 @@ public:
     std::uint32_t shadowListBase() const { return shadowListBase_; }
     // The compacted draws: the colour pass's, then from drawCapacity() the shadow pass's.
     const gpu::Buffer& draws() const { return draws_; }
-    // One per character slot: the colour pass's, then from characterCount() the shadow pass's.
+    // One per character slot: the colour pass's, then from characterCount() the shadow pass's (vs only:
+    // one unused command otherwise).
     const gpu::Buffer& characterDraws() const { return characterDraws_; }
     // One per bucket: the colour pass's, then from bucketCount() the shadow pass's.
     const gpu::Buffer& bucketDraws() const { return bucketDraws_; }
@@ -116,6 +124,8 @@ private:
     std::uint32_t meshCapacity_, drawCapacity_;
     std::uint64_t skinnedCapacity_, fixedCapacity_;  // set by planBuckets, before this line runs
     std::uint32_t shadowListBase_ = 0;
+    bool characterDrawsOn_ = false;
+    gpu::Buffer createCharacterDraws(bool on) const;
     gpu::Buffer bucketRecords_, bucketFrames_, totals_, visible_, draws_, characterDraws_, bucketDraws_,
         skinDispatches_, lodState_, impostorFrame_, impostorList_, meshCut_, meshCandidates_, meshBoundary_,
         shadowStates_;

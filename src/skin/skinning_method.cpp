@@ -53,6 +53,12 @@ std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const Method
     return nullptr;
 }
 
+render::BoneBlocks boneBlocksFor(Method method, render::AnimationPath animation) {
+    const bool everyCharacter =
+        method == Method::VertexShader || method == Method::Static || animation == render::AnimationPath::Cpu;
+    return everyCharacter ? render::BoneBlocks::PerCharacter : render::BoneBlocks::PerMeshSlot;
+}
+
 std::uint64_t estimateMethodBytes(Method method, std::uint64_t characters, std::uint64_t skinnedCapacity,
                                   std::uint64_t fixedCapacity, std::uint32_t maxTargetDimension) {
     switch (method) {

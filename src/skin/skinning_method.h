@@ -14,6 +14,7 @@
 #include <vulkan/vulkan.h>
 
 #include "gpu/pass_observer.h"
+#include "render/animation_pass.h"
 #include "render/character_draw.h"
 
 namespace gpu {
@@ -69,6 +70,11 @@ public:
 };
 
 std::unique_ptr<SkinningMethod> createSkinningMethod(Method method, const MethodSetup& setup);
+
+// Whom the bone blocks belong to with this method and animation path (render::BoneBlocks): mesh slots,
+// except where something needs every character's bones at a fixed place: vs binds them at offsets the
+// CPU records, static skins every character once from CPU palettes, the CPU path uploads them all.
+render::BoneBlocks boneBlocksFor(Method method, render::AnimationPath animation);
 
 // Device memory a method needs for a crowd whose worst frame skins `skinnedCapacity` vertices (every
 // character visible at LOD 0) and whose fixed layout holds `fixedCapacity` (every character at every

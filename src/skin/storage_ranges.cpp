@@ -28,10 +28,16 @@ bool storesSkinnedVertices(Method method) {
 }  // namespace
 
 std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
-                                            Method method, std::uint32_t meshCapacity) {
+                                            Method method, std::uint32_t meshCapacity, render::AnimationPath animation) {
     const std::uint64_t n = crowd.size();
-    std::vector<StorageBinding> bindings = {{"bone matrices", render::planBones(limits, crowd).bytes(), n, 0},
-                                            {"character records", n * sizeof(gpu::CharacterRecord), n, 0}};
+    // Blocks per mesh slot stop growing at the mesh capacity, as the skinned vertices do.
+    const bool perSlot = boneBlocksFor(method, animation) == render::BoneBlocks::PerMeshSlot;
+    const std::uint32_t slots = meshCapacity > 0 && meshCapacity < n ? meshCapacity : static_cast<std::uint32_t>(n);
+    const render::BoneLayout bones =
+        render::planBones(limits, crowd, boneBlocksFor(method, animation), slots);
+    std::vector<StorageBinding> bindings = {
+        {"bone matrices", bones.bytes(), perSlot ? slots : n, perSlot ? meshCapacity : 0u},
+        {"character records", n * sizeof(gpu::CharacterRecord), n, 0}};
     if (storesSkinnedVertices(method)) {
         const SkinnedCapacity capacity = skinnedCapacity(crowd, meshCapacity);
         const bool fixed = method == Method::Static;  // a slot per character and LOD, whatever the cap
@@ -44,9 +50,10 @@ std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits
 }
 
 std::optional<StorageRangeProblem> storageRangeProblem(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
-                                                       Method method, std::uint32_t meshCapacity) {
+                                                       Method method, std::uint32_t meshCapacity,
+                                                       render::AnimationPath animation) {
     const std::uint64_t range = limits.maxStorageBufferRange;
-    for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity)) {
+    for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity, animation)) {
         if (b.bytes <= range) continue;
         const std::uint64_t fitting = charactersFitting(b, range);
         const bool capped = b.capacityCap > 0 && b.holds == b.capacityCap;
@@ -62,16 +69,16 @@ std::optional<StorageRangeProblem> storageRangeProblem(const VkPhysicalDeviceLim
 }
 
 void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
-                        std::uint32_t meshCapacity) {
-    if (const auto problem = storageRangeProblem(limits, crowd, method, meshCapacity))
+                        std::uint32_t meshCapacity, render::AnimationPath animation) {
+    if (const auto problem = storageRangeProblem(limits, crowd, method, meshCapacity, animation))
         throw gpu::Error("a crowd of " + std::to_string(crowd.size()) + " characters: " + problem->message,
                          gpu::ErrorKind::Unsupported);
 }
 
 std::uint64_t maxCharactersInStorageRange(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
-                                          Method method, std::uint32_t meshCapacity) {
+                                          Method method, std::uint32_t meshCapacity, render::AnimationPath animation) {
     std::uint64_t most = std::numeric_limits<std::uint64_t>::max();
-    for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity))
+    for (const StorageBinding& b : storageBindings(limits, crowd, method, meshCapacity, animation))
         most = std::min(most, charactersFitting(b, limits.maxStorageBufferRange));
     return most;
 }

@@ -21,11 +21,13 @@ struct StorageBinding {
     std::uint32_t capacityCap = 0;  // it stops growing past this many characters (--mesh-capacity; 0: never)
 };
 
-// What this crowd binds with this method: bone matrices and character records always; the skinned
+// What this crowd binds with this method and animation path: bone matrices (a block per mesh slot,
+// or per character: skin::boneBlocksFor) and character records always; the skinned
 // vertices' position (and, as large, normal) stream for the methods whose shaders store into them
 // (compute, static, two-pass-direct; two-pass copies into them and vs reads no skinned vertices).
 std::vector<StorageBinding> storageBindings(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
-                                            Method method, std::uint32_t meshCapacity);
+                                            Method method, std::uint32_t meshCapacity,
+    render::AnimationPath animation = render::AnimationPath::Gpu);
 
 // The first binding over the range, in one line: its size, the limit and how many characters of this
 // crowd's mix (or what mesh capacity) would fit. `meshCapacityBound`: the binding is sized by the mesh
@@ -35,13 +37,16 @@ struct StorageRangeProblem {
     bool meshCapacityBound = false;
 };
 std::optional<StorageRangeProblem> storageRangeProblem(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
-                                                       Method method, std::uint32_t meshCapacity);
+                                                       Method method, std::uint32_t meshCapacity,
+    render::AnimationPath animation = render::AnimationPath::Gpu);
 // Throws gpu::Error(Unsupported) with "a crowd of N characters: " and the problem's message.
 void checkStorageRanges(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd, Method method,
-                        std::uint32_t meshCapacity);
+                        std::uint32_t meshCapacity,
+    render::AnimationPath animation = render::AnimationPath::Gpu);
 
 // The most characters of this crowd's mix (same models, same shares) whose bindings all fit.
 std::uint64_t maxCharactersInStorageRange(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
-                                          Method method, std::uint32_t meshCapacity);
+                                          Method method, std::uint32_t meshCapacity,
+    render::AnimationPath animation = render::AnimationPath::Gpu);
 
 }  // namespace skin

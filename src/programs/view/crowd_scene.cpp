@@ -58,6 +58,18 @@ void CrowdScene::setMethod(crowdgpu::Method method, VkExtent2D size) {
     method_ = method;
 }
 
+void CrowdScene::setAnimation(crowdgpu::Animation path, VkExtent2D size) {
+    const crowdgpu::Animation previous = animation_;
+    animation_ = path;
+    try {
+        app::checkCrowdFits(context_, *crowd_, rendererOptions(method_, size), size);
+        renderer_->setAnimation(path);
+    } catch (...) {
+        animation_ = previous;
+        throw;
+    }
+}
+
 std::uint32_t CrowdScene::maxCharacters(VkExtent2D size) const {
     // Memory grows with the characters: this crowd's bytes per character (its fixed costs included,
     // so the limit errs low) against the device's memory. A rebuild still checks the real size.

@@ -35,8 +35,9 @@ public:
     void setMethod(crowdgpu::Method method, VkExtent2D size);
     // Shadows on or off, now and for crowds rebuilt later.
     void setShadows(bool on) { shadows_ = on, renderer_->setShadows(on); }
-    // Where bone matrices come from (--animation), now and for crowds rebuilt later.
-    void setAnimation(crowdgpu::Animation path) { animation_ = path, renderer_->setAnimation(path); }
+    // Where bone matrices come from (--animation), now and for crowds rebuilt later. The CPU path keeps a
+    // bone block per character: a crowd whose blocks do not fit is refused (app::Error) and nothing changes.
+    void setAnimation(crowdgpu::Animation path, VkExtent2D size);
 
     app::CrowdRenderer& renderer() { return *renderer_; }
     const app::CrowdRenderer& renderer() const { return *renderer_; }

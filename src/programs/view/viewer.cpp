@@ -52,7 +52,7 @@ Viewer::Viewer(const ViewerOptions& options)
       scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
              options.render.meshCapacity, options.render.samples, swapchain_.extent()) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
-    scene_.setAnimation(options.render.animation);
+    scene_.setAnimation(options.render.animation, swapchain_.extent());
     controls_.scenePath = options.render.camera != app::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
     frameHome(true);
@@ -216,9 +216,12 @@ void Viewer::apply(const PanelRequests& requests) {
         scene_.renderer().setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
     }
     if (requests.shadows) scene_.setShadows(*requests.shadows);
-    if (requests.gpuAnimation)
-        scene_.setAnimation(*requests.gpuAnimation ? crowdgpu::Animation::Gpu : crowdgpu::Animation::Cpu);
     try {
+        if (requests.gpuAnimation) {
+            scene_.setAnimation(*requests.gpuAnimation ? crowdgpu::Animation::Gpu : crowdgpu::Animation::Cpu,
+                                swapchain_.extent());
+            maxCharacters_ = scene_.maxCharacters(swapchain_.extent());  // the CPU path's bones bound it sooner
+        }
         if (requests.method) {
             scene_.setMethod(*requests.method, swapchain_.extent());
             maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
