@@ -9,6 +9,12 @@
 // range, a prefix of its skinned level's vertices (cull.glsl.inc, shadowState), appended after the
 // colour draws in any order (a depth-only pass does not depend on it). A character skinned only for
 // its shadow (out of view) keeps its colour draw with no instance, so the colour pass skips it.
+//
+// A character in view fading to the next mesh level (gpu_types.h, FADE_SHIFT) keeps its colour draw
+// (drawn dithered: its finer share) and gets a partner draw, the coarser level's index range over the
+// same skinned vertices (a prefix of them, as for shadows), appended after the shadow draws; the colour
+// pass draws those with the complementary dither. One fading to its impostor has no partner here: the
+// cull pass listed it as an impostor too.
 #include "gpu_types.h"
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
@@ -17,6 +23,7 @@ layout(push_constant) uniform Push {
     uint fixedLayout;       // 1: every character has its own skinned slot (the static method)
     uint characterDrawsOn;  // 1: write the per-character draws too
     uint shadowDrawBase;    // where the shadow draws start in `draws` (its colour draws' capacity)
+    uint fadeDrawBase;      // where the fade partners' draws start in `draws` (after the shadow draws)
 };
 layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 2) readonly buffer Characters { CharacterRecord characters[]; };
@@ -45,6 +52,11 @@ void main() {
         uint vertexOffset = fixedLayout != 0u ? bucket.fixedLayout.x + characters[c].ids.z * bucket.mesh.z
                                               : frames[b].vertexBase + k * bucket.mesh.z;
         draws[i] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(vertexOffset), c);
+        if (inView != 0u && (shadow >> FADE_SHIFT) != 0u && bucket.list.y + 1u < LOD_COUNT) {
+            BucketRecord coarser = buckets[b + 1u];
+            draws[fadeDrawBase + atomicAdd(totals.fadeDrawCount, 1u)] =
+                DrawIndexedCommand(coarser.mesh.y, 1u, coarser.mesh.x, int(vertexOffset), c);
+        }
         if (casts)
             draws[shadowDrawBase + atomicAdd(totals.shadowDrawCount, 1u)] =
                 DrawIndexedCommand(shadowBucket.mesh.y, 1u, shadowBucket.mesh.x, int(vertexOffset), c);

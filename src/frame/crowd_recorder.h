@@ -46,6 +46,8 @@ struct RecorderOptions {
     render::AnimationPath animation = render::AnimationPath::Gpu;
     render::CullSettings cull;
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
+    // Impostors blend the four nearest cells (views and frames; docs/impostors.md), or show the nearest.
+    bool impostorBlend = true;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
@@ -110,6 +112,8 @@ public:
     const render::CullSettings& cull() const { return cull_; }
     void setShadows(bool on) { shadows_ = on; }
     bool shadows() const { return shadows_; }
+    void setImpostorBlend(bool on) { impostorBlend_ = on; }
+    bool impostorBlend() const { return impostorBlend_; }
     void setAnimation(render::AnimationPath path) { animation_ = path; }
     render::AnimationPath animation() const { return animation_; }
 
@@ -126,6 +130,8 @@ public:
     const render::CrowdShape& shape() const { return shape_; }
     // What the cull pass gets for this view and the current settings (the CPU reference takes the same).
     gpu::CullUniforms cullUniforms(const render::FrameView& view) const;
+    // Whether level changes fade this frame: asked for, and the method draws from skinned vertices.
+    bool fadesDrawn() const;
     // Device memory of the crowd's buffers and the method's resources.
     std::vector<skin::MemoryItem> memory() const;
     // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
@@ -168,6 +174,7 @@ private:
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;
+    bool impostorBlend_;
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded

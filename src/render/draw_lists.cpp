@@ -58,11 +58,12 @@ std::vector<gpu::BucketRecord> planBuckets(const gpu::VulkanContext& context, co
 std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t buckets, std::uint32_t meshCapacity) {
     // Per character: the baseline's two draw commands (colour, shadow), the LOD state, the shadow state
     // and two impostor list entries (in view, casting); per mesh-level character (all, without a cap):
-    // visible-list and shadow-list entries (one each per LOD) and two draw commands; with a cap, the
+    // visible-list and shadow-list entries (one each per LOD) and three draw commands (colour, shadow,
+    // fade partner); with a cap, the
     // cut's histograms and per-character lists.
     const std::uint64_t meshLevel = meshCapacity > 0 ? std::min<std::uint64_t>(characters, meshCapacity) : characters;
     return characters * (2 * sizeof(gpu::DrawIndexedCommand) + 4 + 4 + 2 * 4) +
-           meshLevel * 2 * (LOD_COUNT * 4 + sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
+           meshLevel * (2 * LOD_COUNT * 4 + 3 * sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
            buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + 2 * sizeof(gpu::DrawIndexedCommand) + 16) +
            meshCutSizes(characters, meshCapacity).total();
 }
@@ -92,8 +93,8 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
         // Each of these holds the colour pass's entries, then the shadow pass's.
         visible_ = gpu::createBuffer(context, std::max<VkDeviceSize>(2 * listed, 1) * 4, filled, device,
                                      "visible and shadow lists");
-        draws_ = gpu::createBuffer(context, 2 * std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect,
-                                   device, "draw commands");
+        draws_ = gpu::createBuffer(context, 3 * std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect,
+                                   device, "draw commands (colour, shadow, fade partners)");
         characterDraws_ = gpu::createBuffer(context, 2 * n * sizeof(gpu::DrawIndexedCommand), indirect | filled, device,
                                             "per-character draw commands");
         bucketDraws_ = gpu::createBuffer(context, 2 * b * sizeof(gpu::DrawIndexedCommand), indirect, device,

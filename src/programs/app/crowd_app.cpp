@@ -151,6 +151,8 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.meshCapacity = meshCapacity;
     settings.shadows = shadows;
     settings.shadowLod = cull.shadowLod;
+    settings.lodFade = cull.lodFade;
+    settings.impostorBlend = cull.impostorBlend;
     return settings;
 }
 

@@ -41,6 +41,8 @@ usage: crowd-bench [options]
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
+  --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
+  --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
