@@ -32,11 +32,12 @@ layout(location = 8) flat in float vFadeShare;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    // Fading from its last mesh level (which draws the other pixels): the coarser level's share.
-    if (vFadeShare > 0.0 && !fadeDraws(gl_FragCoord.xy, vFadeShare, true)) discard;
     vec4 albedo = impostorTexel(atlasAlbedo, kBlend, vCells, vWeights, vGrid, vLocal);
     if (albedo.a < (kAlphaToCoverage ? 1.0 / 255.0 : 0.5)) discard;  // (nothing covered: no depth either)
     vec4 packed = impostorTexel(atlasNormal, kBlend, vCells, vWeights, vGrid, vLocal);
+    // Fading from its last mesh level (which draws the other pixels): the coarser level's share. After
+    // the texture reads, which need their neighbours' places for derivatives.
+    if (vFadeShare > 0.0 && !fadeDraws(gl_FragCoord.xy, vFadeShare, true)) discard;
     vec3 n = packed.rgb / packed.a * 2.0 - 1.0;
     float c = vHeading.x, s = vHeading.y;
     vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);

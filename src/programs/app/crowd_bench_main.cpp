@@ -326,9 +326,11 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    std::printf("scene %s: culling %s, LOD %s, shadows %s, anti-aliasing %s, camera %s from %.1f s\n",
+    std::printf("scene %s: culling %s, LOD %s, fades %s, impostor blend %s, shadows %s, anti-aliasing %s, "
+                "camera %s from %.1f s\n",
                 options.scene.scene.scene.c_str(), crowdgpu::cullingName(options.scene.cull.mode),
-                options.scene.cull.lod ? "on" : "off", options.scene.shadows ? "on" : "off",
+                options.scene.cull.lod ? "on" : "off", options.scene.cull.lodFade ? "on" : "off",
+                options.scene.cull.impostorBlend ? "on" : "off", options.scene.shadows ? "on" : "off",
                 app::antiAliasingName(options.scene.samples), app::cameraPathName(options.scene.camera),
                 options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);
