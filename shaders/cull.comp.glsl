@@ -31,10 +31,12 @@ void cullCharacter(uint c) {
     float size = projectedDiameter(sphere, cull.camera);
     // Every character's level is kept up to date, visible or not, so culling never changes a level.
     uint lod = 0u;
-    if (cull.flags.z != 0u) lod = chooseLod(size, lodState[c], cull.lod);
+    bool fades = cull.flags.z != 0u && cull.fade.x != 0u;
+    if (cull.flags.z != 0u) lod = fades ? fadedLod(size, cull.lod) : chooseLod(size, lodState[c], cull.lod);
     lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
     uint shadow = shadowState(sphere, lod, inView, cull.planes, cull.lightPlanes, cull.light.xyz, cull.shadow,
                               cull.flags, cull.limits, cull.shadowFlags);
+    if (fades) shadow |= fadeShare(size, lod, cull.lod) << FADE_SHIFT;
     shadowStates[c] = shadow;
     if (lod == IMPOSTOR_LEVEL) {
         placeImpostor(c, shadow);

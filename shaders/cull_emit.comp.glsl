@@ -14,6 +14,12 @@
 // this frame, and its record's ids.y says so, for the palette pass that writes the block and every
 // skinning method that reads it (they run after this pass). Characters not listed keep a stale ids.y
 // that nothing reads.
+//
+// A character in view fading to the next mesh level (gpu_types.h, FADE_SHIFT) keeps its colour draw
+// (drawn dithered: its finer share) and gets a partner draw, the coarser level's index range over the
+// same skinned vertices (a prefix of them, as for shadows), appended after the shadow draws; the colour
+// pass draws those with the complementary dither. One fading to its impostor has no partner here: the
+// cull pass listed it as an impostor too.
 #include "gpu_types.h"
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
@@ -23,6 +29,7 @@ layout(push_constant) uniform Push {
     uint characterDrawsOn;  // 1: write the per-character draws too
     uint shadowDrawBase;    // where the shadow draws start in `draws` (its colour draws' capacity)
     uint slotBoneRows;      // BoneRows per mesh slot's bone block; 0: blocks per character (ids.y fixed)
+    uint fadeDrawBase;      // where the fade partners' draws start in `draws` (after the shadow draws)
 };
 layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 2) buffer Characters { CharacterRecord characters[]; };
@@ -52,6 +59,11 @@ void main() {
                                               : frames[b].vertexBase + k * bucket.mesh.z;
         draws[i] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(vertexOffset), c);
         if (slotBoneRows != 0u) characters[c].ids.y = i * slotBoneRows;
+        if (inView != 0u && (shadow >> FADE_SHIFT) != 0u && bucket.list.y + 1u < LOD_COUNT) {
+            BucketRecord coarser = buckets[b + 1u];
+            draws[fadeDrawBase + atomicAdd(totals.fadeDrawCount, 1u)] =
+                DrawIndexedCommand(coarser.mesh.y, 1u, coarser.mesh.x, int(vertexOffset), c);
+        }
         if (casts)
             draws[shadowDrawBase + atomicAdd(totals.shadowDrawCount, 1u)] =
                 DrawIndexedCommand(shadowBucket.mesh.y, 1u, shadowBucket.mesh.x, int(vertexOffset), c);

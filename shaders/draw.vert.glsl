@@ -6,6 +6,7 @@
 #include "gpu_types.h"
 #include "shading.glsl.inc"
 #include "crowd_set.glsl.inc"
+#include "fade_dither.glsl.inc"
 #define VARYING out
 #include "draw_varyings.glsl.inc"
 
@@ -24,4 +25,5 @@ void main() {
     vUv = textureCoordinates[model.info.x + uint(gl_VertexIndex - gl_BaseVertexARB)];
     vTextureSlot = textureSlot(scene, material, model);
     vWorld = inPosition.xyz;
+    vFadeShare = fadeShareOf(characterStates[gl_InstanceIndex]);
 }

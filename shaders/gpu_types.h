@@ -29,6 +29,14 @@ using uint = std::uint32_t;
 #define SHADOW_LEVEL_MASK 3u
 #define SHADOW_CASTS_BIT 4u
 #define SHADOW_IN_VIEW_BIT 8u
+// The same word's upper half: while a character's size is in the fade band of a threshold (lod-fade,
+// shaders/cull.glsl.inc), the share of the coarser of its two levels in steps of 1/FADE_STEPS (0: not
+// fading). It is drawn at both: the finer (its level, skinned) on the pixels whose screen-space dither
+// is at or above the share, the coarser (the next mesh level's index range over the same skinned
+// vertices, or its impostor) on the others (shaders/fade_dither.glsl.inc). FADE_STEPS is the dither's
+// number of thresholds: a finer share would draw the same pixels.
+#define FADE_SHIFT 16u
+#define FADE_STEPS 16u
 // Threads per workgroup of the cull, emit and skinning compute passes.
 #define CULL_WORKGROUP_SIZE 64
 
@@ -115,7 +123,7 @@ struct DrawTotals {
     uint drawCount;       // visible characters = draws in the compacted list
     uint skinnedVertices; // vertices the skinning pass writes
     uint shadowDrawCount; // mesh shadow casters = draws in the shadow pass's compacted list
-    uint unused1;
+    uint fadeDrawCount;   // fading characters whose coarser level is a mesh: draws in the fade partners' list
     uvec4 emitDispatch;   // indirect dispatch of the emit pass (x groups, y = z = 1)
 };
 
@@ -272,6 +280,8 @@ struct CullUniforms {
                      // sphere diameter in texels), w: below this diameter in texels a caster is not drawn
     uvec4 shadowFlags;  // x: 1 = shadow LOD (levels from the shadow map; else the view's level),
                         // y, z, w: unused
+    uvec4 fade;      // x: 1 = a level change fades across the hysteresis band (lod-fade: both levels
+                     // drawn, dithered; no hysteresis then), y, z, w: unused
 };
 
 // Push constants of the skinning passes: which bucket, and where its characters come from.

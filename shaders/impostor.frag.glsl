@@ -11,12 +11,14 @@
 #include "gpu_types.h"
 #include "shading.glsl.inc"
 #include "impostor_sample.glsl.inc"
+#include "fade_dither.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(set = 2, binding = 0) uniform sampler2DArray atlasAlbedo;
 layout(set = 2, binding = 1) uniform sampler2DArray atlasNormal;
 layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(constant_id = 0) const bool kAlphaToCoverage = false;
+layout(constant_id = 1) const bool kBlend = true;  // impostor-blend: four cells, or the nearest one's texel
 
 layout(location = 0) in vec2 vLocal;
 layout(location = 1) flat in uvec4 vCells;
@@ -26,12 +28,16 @@ layout(location = 4) in vec3 vWorld;
 layout(location = 5) flat in float vRadius;
 layout(location = 6) flat in vec2 vWeights;
 layout(location = 7) flat in uvec2 vGrid;
+layout(location = 8) flat in float vFadeShare;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec4 albedo = impostorBlendedTexel(atlasAlbedo, vCells, vWeights, vGrid, vLocal);
+    vec4 albedo = impostorTexel(atlasAlbedo, kBlend, vCells, vWeights, vGrid, vLocal);
     if (albedo.a < (kAlphaToCoverage ? 1.0 / 255.0 : 0.5)) discard;  // (nothing covered: no depth either)
-    vec4 packed = impostorBlendedTexel(atlasNormal, vCells, vWeights, vGrid, vLocal);
+    vec4 packed = impostorTexel(atlasNormal, kBlend, vCells, vWeights, vGrid, vLocal);
+    // Fading from its last mesh level (which draws the other pixels): the coarser level's share. After
+    // the texture reads, which need their neighbours' places for derivatives.
+    if (vFadeShare > 0.0 && !fadeDraws(gl_FragCoord.xy, vFadeShare, true)) discard;
     vec3 n = packed.rgb / packed.a * 2.0 - 1.0;
     float c = vHeading.x, s = vHeading.y;
     vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);

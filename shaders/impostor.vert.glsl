@@ -12,10 +12,12 @@
 #include "impostor_set.glsl.inc"
 #include "impostor_pose.glsl.inc"
 #include "impostor_cell.glsl.inc"
+#include "fade_dither.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(constant_id = 0) const bool SHADOW_PASS = false;
+layout(constant_id = 1) const bool BLEND = true;  // impostor-blend: four cells, or the nearest one
 
 layout(location = 0) out vec2 vLocal;        // the place in a cell, [0, 1]^2 over the quad
 layout(location = 1) flat out uvec4 vCells;   // impostorBlend's four cells
@@ -25,13 +27,15 @@ layout(location = 4) out vec3 vWorld;
 layout(location = 5) flat out float vRadius;
 layout(location = 6) flat out vec2 vWeights;  // impostorBlend's weights
 layout(location = 7) flat out uvec2 vGrid;    // cells per atlas row, per layer
+layout(location = 8) flat out float vFadeShare;  // fading from its last mesh level: the impostor's share
 
 // Model frame to world: the heading's turn about +y (as worldSphere and characterTransform turn it).
 vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.z - s * v.x); }
 
 void main() {
     const vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
-    CharacterRecord character = characters[impostors[gl_VertexIndex / 4]];
+    uint index = impostors[gl_VertexIndex / 4];
+    CharacterRecord character = characters[index];
     ImpostorModel m = impostorModels[character.ids.x];
     vec2 corner = corners[gl_VertexIndex % 4];
 
@@ -43,6 +47,7 @@ void main() {
     vec3 towardsModel = vec3(c * towards.x - s * towards.z, towards.y, c * towards.z + s * towards.x);
     ImpostorPose pose = impostorPose(character);
     ImpostorBlend blend = impostorBlend(m, pose.clip, pose.phase, towardsModel);
+    if (!BLEND) blend = impostorNearest(blend);
     vec3 right, up;
     impostorBasis(towardsModel, right, up);
 
@@ -56,4 +61,5 @@ void main() {
     vHeading = vec2(c, s);
     vWorld = world;
     vRadius = m.square.w * scale;
+    vFadeShare = fadeShareOf(characterStates[index]);
 }

@@ -18,7 +18,9 @@ layout(location = 4) in vec3 vWorld;
 layout(location = 5) flat in float vRadius;
 layout(location = 6) flat in vec2 vWeights;
 layout(location = 7) flat in uvec2 vGrid;
+layout(location = 8) flat in float vFadeShare;
+layout(constant_id = 1) const bool kBlend = true;  // impostor-blend: two frames, or the nearest cell
 
 void main() {
-    if (impostorShadowCoverage(atlasAlbedo, vCells, vWeights, vGrid, vLocal) < 0.5) discard;
+    if (impostorShadowTexelCoverage(atlasAlbedo, kBlend, vCells, vWeights, vGrid, vLocal) < 0.5) discard;
 }

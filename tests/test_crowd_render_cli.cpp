@@ -108,6 +108,8 @@ TEST(CrowdRenderCli, BadScenesAndLodSettingsAreRejected) {
     expectOneLineError("--impostors maybe", "--impostors");
     expectOneLineError("--mesh-capacity 0", "too small");
     expectOneLineError("--lod maybe", "--lod");
+    expectOneLineError("--lod-fade maybe", "--lod-fade");
+    expectOneLineError("--impostor-blend maybe", "--impostor-blend");
     expectOneLineError("--cull sometimes", "--cull");
     expectOneLineError("--behaviour dance", "--behaviour");
     expectOneLineError("--animation quantum", "--animation");

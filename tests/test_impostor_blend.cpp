@@ -18,34 +18,16 @@
 
 #include "app/camera_path.h"
 #include "app/image_downsample.h"
+#include "support/character_change.h"
 #include "support/gpu_test.h"
 
 namespace {
 
+using test::characterChange;
+using test::characterMask;
 using test::GpuTest;
 
 constexpr float kDegree = 3.14159265f / 180.0f;
-
-// The pixels a character covers: those its tint changes (a picture at tint 1 against the same at 0.6).
-std::vector<bool> characterMask(const app::Rgba8Image& lit, const app::Rgba8Image& dim) {
-    std::vector<bool> mask(std::size_t{lit.width} * lit.height);
-    for (std::size_t p = 0; p < mask.size(); ++p)
-        for (int c = 0; c < 3; ++c) mask[p] = mask[p] || lit.pixels[p * 4 + c] != dim.pixels[p * 4 + c];
-    return mask;
-}
-
-// The mean absolute difference, over RGB, of two frames over the pixels the character covers in either.
-double characterChange(const app::Rgba8Image& a, const app::Rgba8Image& b, const std::vector<bool>& maskA,
-                       const std::vector<bool>& maskB) {
-    double sum = 0.0;
-    std::size_t pixels = 0;
-    for (std::size_t p = 0; p < maskA.size(); ++p) {
-        if (!maskA[p] && !maskB[p]) continue;
-        ++pixels;
-        for (int c = 0; c < 3; ++c) sum += std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c]));
-    }
-    return sum / (3.0 * static_cast<double>(std::max<std::size_t>(pixels, 1)));
-}
 
 // The fraction of the pixels the character covers in either frame whose colour changes by more than
 // `levels` in some channel from one frame to the next: a jump, where smooth motion changes a pixel by a
@@ -66,11 +48,13 @@ double jumpFraction(const app::Rgba8Image& a, const app::Rgba8Image& b, const st
 // One soldier at the origin as an impostor 40 px across in a 96x96 picture (lit, or dimmed to find its
 // pixels), watched from 20 degrees up at azimuth `azimuth` (degrees) at scene time `time`.
 struct OneImpostor {
-    explicit OneImpostor(const gpu::VulkanContext& context, const model::SkinnedModel& soldier, bool impostors)
+    explicit OneImpostor(const gpu::VulkanContext& context, const model::SkinnedModel& soldier, bool impostors,
+                         bool blend = true)
         : soldier(soldier), lit(soldier, characters(soldier, 1.0f)), dim(soldier, characters(soldier, 0.6f)) {
         test::RendererOptions options;
         options.size = {96, 96};
         options.method = skin::Method::Compute;
+        options.impostorBlend = blend;
         options.cull.impostors = impostors;
         options.cull.impostorThreshold = 49.0f;
         options.cull.hysteresis = 0.0f;
@@ -159,6 +143,24 @@ TEST_F(GpuTest, ATurningOrWalkingImpostorChangesSmoothly) {
     // 5.5 blended (the mesh's 6.7), 9.7 with the nearest frame.
     EXPECT_LT(measured[1][0].largest, 8.0);
     EXPECT_LT(measured[1][1].largest, 7.5);
+}
+
+// The switch back (--impostor-blend off, RendererSettings::impostorBlend): the same turning and walking
+// impostor shows the nearest cell again, so it jumps at the view and frame boundaries that the blend
+// smooths. Lavapipe, largest change: turning 23.4 (blended 4.2), walking 9.7 (blended 5.5), as before
+// the blend existed; the bounds are the blended test's, which the nearest cell must exceed.
+TEST_F(GpuTest, ImpostorBlendOffShowsTheNearestCellAgain) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    const float duration = soldier.clips[static_cast<std::size_t>(soldier.findClip("walk"))].duration;
+    std::vector<glm::vec2> turning, walking;
+    for (int k = 0; k <= 45; ++k) turning.push_back({3.0f + static_cast<float>(k), 0.4f});
+    for (int k = 0; k <= static_cast<int>(duration * 60.0f); ++k) walking.push_back({3.0f, static_cast<float>(k) / 60.0f});
+    OneImpostor one(*context, soldier, true, false);
+    const Changes turned = sequenceChanges(one, turning, "turning-nearest");
+    const Changes walked = sequenceChanges(one, walking, "walking-nearest");
+    std::printf("nearest cell: largest frame-to-frame change turning %.2f, walking %.2f\n", turned.largest, walked.largest);
+    EXPECT_GT(turned.largest, 8.0);
+    EXPECT_GT(walked.largest, 7.5);
 }
 
 // A still crowd of impostors (scene time held) under a camera orbiting it slowly, 0.045 degrees a frame

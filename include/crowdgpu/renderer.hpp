@@ -106,8 +106,17 @@ struct RendererSettings {
     bool lod = true;
     float lodThresholds[2] = {150.0f, 50.0f};  // pixels of pose-sphere diameter for LOD 0 and 1
     float lodHysteresis = 0.1f;
+    // Level changes fade: within lodHysteresis of a threshold (the LOD thresholds and, with impostors,
+    // the impostor threshold) a character is drawn at both levels, each on a complementary screen-space
+    // dither of its pixels, the coarser level's share rising across that band of sizes, so no change
+    // pops (hysteresis is then not needed). With the methods that skin into a buffer or impostors;
+    // the vertex-shader methods do not fade. Off: levels switch at once, with hysteresis.
+    bool lodFade = true;
     bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
     float impostorThreshold = 32.0f;
+    // Impostors blend the two nearest views and the two nearest animation frames (four atlas cells);
+    // off: the nearest cell alone, cheaper (one texture fetch where four were) but stepping visibly.
+    bool impostorBlend = true;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
     bool shadows = true;
@@ -221,6 +230,8 @@ public:
     void setShadows(bool on);
     void setShadowLod(bool on);
     void setShadowRaster(ShadowRaster raster);
+    void setLodFade(bool on);
+    void setImpostorBlend(bool on);
     void setCulling(Culling culling, bool lod);
     void setImpostors(bool on);
     void setAnimation(Animation animation);

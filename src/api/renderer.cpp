@@ -46,6 +46,7 @@ render::CullSettings cullSettings(const RendererSettings& s) {
     cull.lodThresholds[0] = s.lodThresholds[0];
     cull.lodThresholds[1] = s.lodThresholds[1];
     cull.hysteresis = s.lodHysteresis;
+    cull.lodFade = s.lodFade;
     cull.impostors = s.impostors;
     cull.impostorThreshold = s.impostorThreshold;
     // A shadow shows no more than a view of the same size would: the view's thresholds, read in texels.
@@ -70,6 +71,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.animation = s.animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu;
     o.cull = cullSettings(s);
     o.shadows = s.shadows;
+    o.impostorBlend = s.impostorBlend;
     o.shadowMapSize = s.shadowMapSize;
     o.shadowRaster = internalShadowRaster(s.shadowRaster);
     o.framesInFlight = s.framesInFlight;
@@ -273,6 +275,18 @@ void Renderer::setShadowLod(bool on) {
 void Renderer::setShadowRaster(ShadowRaster raster) {
     detail::translated([&] { data_->frame->setShadowRaster(detail::internalShadowRaster(raster)); });
     data_->settings.shadowRaster = raster;
+}
+
+void Renderer::setLodFade(bool on) {
+    RendererSettings s = data_->settings;
+    s.lodFade = on;
+    detail::translated([&] { data_->frame->setCull(detail::cullSettings(s)); });
+    data_->settings = s;
+}
+
+void Renderer::setImpostorBlend(bool on) {
+    data_->frame->setImpostorBlend(on);
+    data_->settings.impostorBlend = on;
 }
 
 void Renderer::setCulling(Culling culling, bool lod) {

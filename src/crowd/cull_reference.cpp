@@ -55,6 +55,15 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
     return std::clamp(previous - 1u, finest, coarsest);
 }
 
+std::uint32_t fadedLod(float size, const glm::vec4& lod) { return lodForSize(size, lod, 1.0f - lod.z); }
+
+std::uint32_t fadeShare(float size, std::uint32_t finer, const glm::vec4& lod) {
+    const float threshold = finer == 0u ? lod.x : finer == 1u ? lod.y : finer == 2u ? lod.w : 0.0f;
+    if (threshold <= 0.0f || lod.z <= 0.0f) return 0u;
+    const float share = std::clamp((threshold * (1.0f + lod.z) - size) / (2.0f * lod.z * threshold), 0.0f, 1.0f);
+    return static_cast<std::uint32_t>(std::floor(share * static_cast<float>(FADE_STEPS) + 0.5f));
+}
+
 std::uint32_t shadowState(const glm::vec4& sphere, std::uint32_t viewLod, bool inView, const gpu::CullUniforms& cull) {
     std::uint32_t state = inView ? SHADOW_IN_VIEW_BIT : 0u;
     const bool shadowLod = cull.shadowFlags.x != 0u && cull.flags.z != 0u;
@@ -97,7 +106,9 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
         const std::uint32_t state = shadow.states[c];
         const std::uint32_t model = characters[c].ids.x;
         const std::uint32_t shadowLevel = state & SHADOW_LEVEL_MASK;
-        lists[model * LOD_COUNT + ((state & SHADOW_IN_VIEW_BIT) ? viewLod : shadowLevel)].push_back(c);
+        const bool inView = (state & SHADOW_IN_VIEW_BIT) != 0u;
+        lists[model * LOD_COUNT + (inView ? viewLod : shadowLevel)].push_back(c);
+        if (impostors && inView && viewLod == LOD_COUNT - 1u && (state >> FADE_SHIFT) != 0u) impostors->push_back(c);
         if (state & SHADOW_CASTS_BIT) shadow.casters[model * LOD_COUNT + shadowLevel].push_back(c);
     };
     auto placeImpostor = [&](std::uint32_t c) {
@@ -110,9 +121,11 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
         const bool inView = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
         const float size = projectedDiameter(sphere, cull.camera);
         std::uint32_t lod = 0;
-        if (cull.flags.z != 0u) lod = chooseLod(size, lodState[c], cull.lod);
+        const bool fades = cull.flags.z != 0u && cull.fade.x != 0u;
+        if (cull.flags.z != 0u) lod = fades ? fadedLod(size, cull.lod) : chooseLod(size, lodState[c], cull.lod);
         lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
         shadow.states[c] = shadowState(sphere, lod, inView, cull);
+        if (fades) shadow.states[c] |= fadeShare(size, lod, cull.lod) << FADE_SHIFT;
         if (lod == IMPOSTOR_LEVEL) {
             placeImpostor(c);
             continue;
@@ -126,8 +139,12 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
                                                        : std::vector<bool>(candidates.size(), true);
     if (demoted) *demoted = static_cast<std::uint32_t>(std::count(kept.begin(), kept.end(), false));
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (kept[i]) placeMesh(candidates[i].character, candidates[i].viewLod);
-        else placeImpostor(candidates[i].character);
+        if (kept[i]) {
+            placeMesh(candidates[i].character, candidates[i].viewLod);
+        } else {
+            shadow.states[candidates[i].character] &= (1u << FADE_SHIFT) - 1u;  // an impostor only, drawn whole
+            placeImpostor(candidates[i].character);
+        }
     }
     if (impostors) std::sort(impostors->begin(), impostors->end());
     std::sort(shadow.impostors.begin(), shadow.impostors.end());

@@ -23,6 +23,10 @@ bool casterInFrustum(const glm::vec4 planes[6], const glm::vec4& sphere, const g
 float projectedDiameter(const glm::vec4& sphere, const glm::vec4& camera);
 std::uint32_t lodForSize(float size, const glm::vec4& lod, float scale);
 std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod);
+// Fades (cull.fade.x): the level a character is listed and skinned at (the finer of the two it fades
+// between), and the coarser one's share in steps of 1/FADE_STEPS (0: not fading), as shaders/cull.glsl.inc.
+std::uint32_t fadedLod(float size, const glm::vec4& lod);
+std::uint32_t fadeShare(float size, std::uint32_t finer, const glm::vec4& lod);
 // A character's shadow this frame (gpu_types.h, SHADOW_*): in view, casting, its level in the shadow map.
 std::uint32_t shadowState(const glm::vec4& sphere, std::uint32_t viewLod, bool inView, const gpu::CullUniforms& cull);
 
@@ -38,7 +42,9 @@ struct ShadowLists {
 };
 
 // Culls and picks levels for every character as the GPU pass does. `lodState` holds each character's
-// last level + 1 (0: none yet) and is updated, as the GPU keeps it. A character in view is listed at
+// last level + 1 (0: none yet) and is updated, as the GPU keeps it. With fades, a character in view
+// fading from the last mesh level is listed both in its bucket and among the impostors, and its shadow
+// state carries its fade (gpu_types.h, FADE_SHIFT; dropped when the cap demotes it). A character in view is listed at
 // its level in view, a shadow caster out of view at its shadow level. With a mesh-level cap
 // (cull.limits.z), the characters beyond it are demoted smallest on screen first
 // (crowd/farthest_first.h); `demoted` counts them when given. Characters at the impostor level or

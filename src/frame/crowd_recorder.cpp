@@ -54,6 +54,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       animation_(options.animation),
       shadows_(options.shadows),
       shadowRasterPath_(options.shadowRaster),
+      impostorBlend_(options.impostorBlend),
       stages_(options.framesInFlight, Stage::Idle),
       views_(options.framesInFlight) {
     if (cull_.impostors) enableImpostors();
@@ -160,7 +161,14 @@ gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) con
     const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(view), shape_, render::lightDirection());
     render::setShadowUniforms(uniforms, cull_, shadows_, light, shadowMap_.size(), render::lightDirection());
     uniforms.limits.z = lists_.meshCapacity();
+    if (!fadesDrawn()) uniforms.fade.x = 0u;
     return uniforms;
+}
+
+bool CrowdRecorder::fadesDrawn() const {
+    // The vertex-shader methods draw from lists the fade partners are not in (one command per
+    // character, one instanced draw per bucket): without partners, no fade.
+    return cull_.lodFade && method_->drawInput() == render::DrawInput::SkinnedVertices;
 }
 
 void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& view) {
@@ -191,7 +199,7 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
         draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
                      render::CharacterDraw::Target::ShadowMap);
     // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
-    if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push);
+    if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push, impostorBlend_);
     shadowMap_.endRendering(cmd);
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
@@ -219,9 +227,10 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     gpu::setViewportAndScissor(cmd, view.viewport);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f),
                                  glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
-    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push);
+    draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.set(slot), push,
+                 render::CharacterDraw::Target::Colour, fadesDrawn());
     // Far characters (and those over the mesh-level cap): after the meshes, depth-tested against them.
-    if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push);
+    if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push, impostorBlend_);
     stages_[slot] = Stage::Idle;
 }
 

@@ -47,6 +47,8 @@ struct RecorderOptions {
     render::AnimationPath animation = render::AnimationPath::Gpu;
     render::CullSettings cull;
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
+    // Impostors blend the four nearest cells (views and frames; docs/impostors.md), or show the nearest.
+    bool impostorBlend = true;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
     render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
@@ -124,6 +126,8 @@ public:
     const render::ShadowMap& shadowMap() const { return shadowMap_; }
     // A method or path whose bone blocks belong to others (skin::boneBlocksFor) reallocates the bones.
     void setAnimation(render::AnimationPath path);
+    void setImpostorBlend(bool on) { impostorBlend_ = on; }
+    bool impostorBlend() const { return impostorBlend_; }
     render::AnimationPath animation() const { return animation_; }
 
     std::uint32_t framesInFlight() const { return framesInFlight_; }
@@ -139,6 +143,8 @@ public:
     const render::CrowdShape& shape() const { return shape_; }
     // What the cull pass gets for this view and the current settings (the CPU reference takes the same).
     gpu::CullUniforms cullUniforms(const render::FrameView& view) const;
+    // Whether level changes fade this frame: asked for, and the method draws from skinned vertices.
+    bool fadesDrawn() const;
     // Device memory of the crowd's buffers and the method's resources.
     std::vector<skin::MemoryItem> memory() const;
     // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
@@ -189,6 +195,7 @@ private:
     bool shadows_;
     render::ShadowRasterPath shadowRasterPath_;
     std::unique_ptr<render::ShadowRaster> shadowRaster_;  // made when the compute path is first asked for
+    bool impostorBlend_;
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded

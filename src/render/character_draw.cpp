@@ -39,8 +39,8 @@ CharacterDraw::CharacterDraw(const gpu::VulkanContext& context, const GeometryPo
         const gpu::BufferBinding crowdBindings[] = {{storage, pool.modelTable().buffer},
                                                     {storage, crowd.characters().buffer},
                                                     {storage, lists.visible().buffer},
-                                                    {storage, crowd.bones().buffer}};
-        static_assert(std::size(crowdBindings) == kCrowdSetBonesBinding + 1, "the bones are the crowd set's last binding");
+                                                    {storage, crowd.bones().buffer},
+                                                    {storage, lists.shadowStates().buffer}};
         crowdSet_ = std::make_unique<gpu::DescriptorBundle>(context, kDrawStages, crowdBindings);
         const gpu::BufferBinding block[] = {boneBlockBinding(context, crowd)};
         boneBlock_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, block);
@@ -64,6 +64,10 @@ void CharacterDraw::release() {
             if (pipelines[i]) vkDestroyPipeline(context_.device, pipelines[i], nullptr);
             pipelines[i] = VK_NULL_HANDLE;
         }
+    for (VkPipeline& pipeline : fade_) {
+        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
+        pipeline = VK_NULL_HANDLE;
+    }
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     layout_ = VK_NULL_HANDLE;
     boneBlock_.reset();
@@ -81,6 +85,16 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     colour.samples = target.samples;
     colour.layout = layout_;
     createPipelines(colour, colour_);
+    // Fades (from skinned vertices only): the colour draws keep the finer share of a fading character's
+    // pixels, the fade partners' draws the coarser share (draw.frag.glsl, kFadeSide).
+    for (std::uint32_t side = 1; side <= 2; ++side) {
+        gpu::GraphicsPipelineDesc fade = colour;
+        fade.vertexShader = draw_vert_spv;
+        fade.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
+        fade.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
+        fade.fragmentConstants = {side};
+        fade_[side - 1] = gpu::createGraphicsPipeline(context_, fade);
+    }
     // The shadow map: depth only, both faces (the light's projection is not mirrored like the camera's),
     // biased by slope so that lit surfaces do not shadow themselves.
     gpu::GraphicsPipelineDesc shadow = colour;
@@ -125,11 +139,12 @@ void CharacterDraw::bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescr
 }
 
 void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices,
-                           VkDescriptorSet sceneSet, const ScenePush& push, Target target) const {
+                           VkDescriptorSet sceneSet, const ScenePush& push, Target target, bool fades) const {
     constexpr std::uint32_t stride = sizeof(gpu::DrawIndexedCommand);
     const VkDeviceSize zero = 0;
     const bool colour = target == Target::Colour;
-    const VkPipeline pipeline = (colour ? colour_ : shadow_)[static_cast<int>(input)];
+    const bool faded = fades && colour && input == DrawInput::SkinnedVertices;
+    const VkPipeline pipeline = faded ? fade_[0] : (colour ? colour_ : shadow_)[static_cast<int>(input)];
     // The shadow pass's commands follow the colour pass's in each buffer (render/draw_lists.h).
     switch (input) {
         case DrawInput::SkinnedVertices: {
@@ -141,6 +156,13 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
                 cmd, lists_.draws().buffer, colour ? 0 : VkDeviceSize{lists_.drawCapacity()} * stride,
                 lists_.totals().buffer, colour ? offsetof(gpu::DrawTotals, drawCount) : offsetof(gpu::DrawTotals, shadowDrawCount),
                 lists_.drawCapacity(), stride);
+            if (faded) {
+                // The fading characters' coarser level, on the pixels their finer level left.
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[1]);
+                vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadeDrawBase()} * stride,
+                                              lists_.totals().buffer, offsetof(gpu::DrawTotals, fadeDrawCount),
+                                              lists_.drawCapacity(), stride);
+            }
             break;
         }
         case DrawInput::BindPoseInstanced:

@@ -48,9 +48,10 @@ public:
     // What a draw renders into: the colour pass's target, or the shadow map (depth only).
     enum class Target { Colour, ShadowMap };
     // Records the characters' draws inside a rendering pass whose scene set is `sceneSet` (for the
-    // shadow map: the scene set seen from the light).
+    // shadow map: the scene set seen from the light). `fades` (colour pass, skinned vertices): the
+    // culling wrote fades (gpu_types.h, FADE_SHIFT), so fading characters are drawn dithered at both levels.
     void record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices, VkDescriptorSet sceneSet,
-                const ScenePush& push, Target target = Target::Colour) const;
+                const ScenePush& push, Target target = Target::Colour, bool fades = false) const;
 
     // The bones were reallocated (CrowdBuffers::setBoneBlocks): both sets bind the new buffer.
     void rebindBones();
@@ -66,11 +67,12 @@ private:
     const GeometryPool& pool_;
     const CrowdBuffers& crowd_;
     const DrawLists& lists_;
-    std::unique_ptr<gpu::DescriptorBundle> crowdSet_;   // set 1: models, characters, visible lists, bones
+    std::unique_ptr<gpu::DescriptorBundle> crowdSet_;   // set 1: models, characters, visible lists, bones, states
     std::unique_ptr<gpu::DescriptorBundle> boneBlock_;  // set 2: one character's bones (dynamic offset)
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline colour_[3] = {};  // by DrawInput
     VkPipeline shadow_[3] = {};
+    VkPipeline fade_[2] = {};    // skinned vertices, colour: the finer level's share, the coarser's
 };
 
 }  // namespace render

@@ -44,6 +44,7 @@ gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4
                       settings.lod && settings.impostors ? settings.impostorThreshold : 0.0f);
     u.flags = glm::uvec4(characters, settings.mode != CullMode::Off ? 1u : 0u, settings.lod ? 1u : 0u, buckets);
     u.limits = glm::uvec4(maxGroups, 0u, 0u, 0u);
+    u.fade.x = settings.lod && settings.lodFade && settings.hysteresis > 0.0f ? 1u : 0u;
     return u;
 }
 
@@ -72,6 +73,7 @@ struct EmitPush {
     std::uint32_t characterDraws;
     std::uint32_t shadowDrawBase;
     std::uint32_t slotBoneRows;
+    std::uint32_t fadeDrawBase;
 };
 
 // The per-character draws' binding in the cull passes' set (cull_emit.comp.glsl).
@@ -168,7 +170,8 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     const auto dynamicOffset = static_cast<std::uint32_t>(offset);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 1, &dynamicOffset);
     // Bone blocks per mesh slot: the emit pass gives each listed character its slot's block.
-    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity(), crowd_.slotBoneRows()};
+    const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity(), crowd_.slotBoneRows(),
+                        lists_.fadeDrawBase()};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     if (mode != CullMode::Cpu) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);

@@ -55,7 +55,8 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         const gpu::BufferBinding bindings[] = {{storage, pool.modelTable().buffer},
                                                {storage, atlas.modelTable().buffer},
                                                {storage, crowd.characters().buffer},
-                                               {storage, lists.impostorList().buffer}};
+                                               {storage, lists.impostorList().buffer},
+                                               {storage, lists.shadowStates().buffer}};
         set_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, bindings);
         const VkDescriptorSetLayout sets[3] = {sceneSetLayout, set_->layout(), atlas.setLayout()};
         const VkPushConstantRange push{kStages, 0, sizeof(ScenePush)};
@@ -70,22 +71,27 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         // covers (as a mesh's edge does), with no sorting, unlike blending. Single-sampled, coverage
         // would be a dither of one sample: the shader cuts at half instead.
         desc.alphaToCoverage = target.samples != VK_SAMPLE_COUNT_1_BIT;
-        desc.fragmentConstants = {desc.alphaToCoverage ? 1u : 0u};
         desc.layout = layout_;
         desc.cullMode = VK_CULL_MODE_NONE;  // a quad facing the eye: its winding is not worth deriving
-        pipeline_ = gpu::createGraphicsPipeline(context, desc);
-        // The shadow map's: depth only, the quad facing the light, biased as the meshes' shadows are.
-        gpu::GraphicsPipelineDesc shadow = desc;
-        shadow.fragmentShader = impostor_shadow_frag_spv;
-        shadow.colorFormats = {};
-        shadow.depthFormat = kShadowFormat;
-        shadow.samples = VK_SAMPLE_COUNT_1_BIT;
-        shadow.alphaToCoverage = false;  // no colour, one sample: its shader cuts the quad at half coverage
-        shadow.fragmentConstants = {};
-        shadow.depthBiasConstant = 1.0f;
-        shadow.depthBiasSlope = 1.5f;
-        shadow.vertexConstants = {1u};  // SHADOW_PASS
-        shadowPipeline_ = gpu::createGraphicsPipeline(context, shadow);
+        // One pipeline of each pass per impostor-blend setting (the shaders' BLEND / kBlend): blended
+        // cells, or the nearest cell with one fetch.
+        for (std::uint32_t blend = 0; blend < 2; ++blend) {
+            desc.vertexConstants = {0u, blend};
+            desc.fragmentConstants = {desc.alphaToCoverage ? 1u : 0u, blend};
+            pipeline_[blend] = gpu::createGraphicsPipeline(context, desc);
+            // The shadow map's: depth only, the quad facing the light, biased as the meshes' shadows are.
+            gpu::GraphicsPipelineDesc shadow = desc;
+            shadow.fragmentShader = impostor_shadow_frag_spv;
+            shadow.colorFormats = {};
+            shadow.depthFormat = kShadowFormat;
+            shadow.samples = VK_SAMPLE_COUNT_1_BIT;
+            shadow.alphaToCoverage = false;  // no colour, one sample: its shader cuts the quad at half coverage
+            shadow.fragmentConstants = {0u, blend};
+            shadow.depthBiasConstant = 1.0f;
+            shadow.depthBiasSlope = 1.5f;
+            shadow.vertexConstants = {1u, blend};  // SHADOW_PASS
+            shadowPipeline_[blend] = gpu::createGraphicsPipeline(context, shadow);
+        }
     } catch (...) {
         release();
         throw;
@@ -95,11 +101,12 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
 ImpostorDraw::~ImpostorDraw() { release(); }
 
 void ImpostorDraw::release() {
-    if (shadowPipeline_) vkDestroyPipeline(context_.device, shadowPipeline_, nullptr);
-    shadowPipeline_ = VK_NULL_HANDLE;
-    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
+    for (VkPipeline* pipeline : {&shadowPipeline_[0], &shadowPipeline_[1], &pipeline_[0], &pipeline_[1]}) {
+        if (*pipeline) vkDestroyPipeline(context_.device, *pipeline, nullptr);
+        *pipeline = VK_NULL_HANDLE;
+    }
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
-    pipeline_ = VK_NULL_HANDLE, layout_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
     if (drawsPipeline_) vkDestroyPipeline(context_.device, drawsPipeline_, nullptr);
     if (drawsLayout_) vkDestroyPipelineLayout(context_.device, drawsLayout_, nullptr);
     drawsPipeline_ = VK_NULL_HANDLE, drawsLayout_ = VK_NULL_HANDLE;
@@ -124,8 +131,9 @@ void ImpostorDraw::recordDraws(VkCommandBuffer cmd) const {
                        {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
 }
 
-void ImpostorDraw::recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, const ScenePush& push) const {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadowPipeline_);
+void ImpostorDraw::recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, const ScenePush& push,
+                                 bool blend) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shadowPipeline_[blend ? 1 : 0]);
     const VkDescriptorSet sets[3] = {lightSet, set_->set(), atlas_.set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 3, sets, 0, nullptr);
     vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
@@ -136,8 +144,8 @@ void ImpostorDraw::recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, 
                                   static_cast<std::uint32_t>(stride));
 }
 
-void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push, bool blend) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_[blend ? 1 : 0]);
     const VkDescriptorSet sets[3] = {sceneSet, set_->set(), atlas_.set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 3, sets, 0, nullptr);
     vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);

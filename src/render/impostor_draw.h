@@ -34,10 +34,11 @@ public:
 
     // Outside any render pass, after culling: this frame's draws, from culling's impostor count.
     void recordDraws(VkCommandBuffer cmd) const;
-    // Inside the colour pass (its viewport set), with the camera's scene set.
-    void record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push) const;
+    // Inside the colour pass (its viewport set), with the camera's scene set. `blend`: four cells
+    // blended (impostor_sample.glsl.inc), or the nearest cell alone (cheaper: one fetch a texture).
+    void record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push, bool blend = true) const;
     // Inside the shadow map's pass, with the light's scene set: the casting impostors' quads.
-    void recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, const ScenePush& push) const;
+    void recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, const ScenePush& push, bool blend = true) const;
     // The fixed index buffer and the draw commands.
     std::uint64_t bytes() const { return quad_.size + draws_.size; }
 
@@ -55,8 +56,8 @@ private:
     VkPipelineLayout drawsLayout_ = VK_NULL_HANDLE;
     VkPipeline drawsPipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
-    VkPipeline shadowPipeline_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_[2] = {};        // by impostor blending: off (the nearest cell), on
+    VkPipeline shadowPipeline_[2] = {};
 };
 
 }  // namespace render

@@ -77,6 +77,8 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.framesInFlight = options.framesInFlight;
     settings.shadows = options.shadows;
     settings.shadowLod = options.cull.shadowLod;
+    settings.lodFade = options.cull.lodFade;
+    settings.impostorBlend = options.impostorBlend;
     settings.shadowMapSize = options.shadowMapSize;
     return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
 }
@@ -100,6 +102,7 @@ void TestRenderer::setCull(const render::CullSettings& cull) {
     setCulling(culling, cull.lod, cull.impostors);
     setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
     library().setShadowLod(cull.shadowLod);
+    library().setLodFade(cull.lodFade);
 }
 
 gpu::CullUniforms TestRenderer::cullUniforms() const {

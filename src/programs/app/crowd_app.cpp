@@ -152,6 +152,8 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.shadows = shadows;
     settings.shadowLod = cull.shadowLod;
     settings.shadowRaster = cull.shadowRaster;
+    settings.lodFade = cull.lodFade;
+    settings.impostorBlend = cull.impostorBlend;
     return settings;
 }
 

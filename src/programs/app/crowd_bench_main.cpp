@@ -43,6 +43,8 @@ usage: crowd-bench [options]
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
   --shadow-raster hardware|compute  the shadow map's mesh casters by the graphics pipeline or in compute
                        (default compute)
+  --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
+  --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
@@ -326,9 +328,11 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    std::printf("scene %s: culling %s, LOD %s, shadows %s, anti-aliasing %s, camera %s from %.1f s\n",
+    std::printf("scene %s: culling %s, LOD %s, fades %s, impostor blend %s, shadows %s, anti-aliasing %s, "
+                "camera %s from %.1f s\n",
                 options.scene.scene.scene.c_str(), crowdgpu::cullingName(options.scene.cull.mode),
-                options.scene.cull.lod ? "on" : "off", options.scene.shadows ? "on" : "off",
+                options.scene.cull.lod ? "on" : "off", options.scene.cull.lodFade ? "on" : "off",
+                options.scene.cull.impostorBlend ? "on" : "off", options.scene.shadows ? "on" : "off",
                 app::antiAliasingName(options.scene.samples), app::cameraPathName(options.scene.camera),
                 options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);

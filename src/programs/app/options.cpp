@@ -34,6 +34,8 @@ usage: crowd-render [options]
                           threshold are drawn as camera-facing quads from an atlas baked at load time
                           (default off)
   --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
+  --impostor-blend on|off impostors blend the two nearest views and animation frames; off: the nearest
+                          atlas cell, one texture fetch instead of four (default on)
   --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame; beyond N, the
                           smallest on screen are drawn as impostors; sizes the skinned-vertex buffers
                           (default 65536)
@@ -52,6 +54,9 @@ usage: crowd-render [options]
                           to reach at 1e9 as at 0)
   --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
                           fraction of it, 0..0.5 (default 0.1)
+  --lod-fade on|off       within that fraction of a threshold a character is drawn at both levels on
+                          complementary dithered pixels, so level and impostor changes fade instead of
+                          popping (in place of hysteresis; not with vs and vs-instanced) (default on)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
   --behaviour NAME        in-place (every character loops its clip where it stands, as in the paper),
                           march (a formation in step: out, about turn, back, halt) or mill (each
@@ -204,6 +209,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             if (!app::parseShadowRaster(raster, options.cull.shadowRaster))
                 throw app::Error("--shadow-raster: '" + raster + "' is not hardware or compute");
         }
+        else if (flag == "--lod-fade") options.cull.lodFade = parseOnOff(flag, next());
+        else if (flag == "--impostor-blend") options.cull.impostorBlend = parseOnOff(flag, next());
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {

@@ -93,6 +93,8 @@ app::CullOptions cullOf(const crowdgpu::RendererSettings& settings) {
     cull.hysteresis = settings.lodHysteresis;
     cull.impostors = settings.impostors;
     cull.impostorThreshold = settings.impostorThreshold;
+    cull.lodFade = settings.lodFade;
+    cull.impostorBlend = settings.impostorBlend;
     return cull;
 }
 

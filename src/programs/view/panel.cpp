@@ -143,6 +143,10 @@ void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
         cull.impostorThreshold = impostorPx;
         changed = true;
     }
+    // Level changes that fade across the hysteresis band, and impostors that blend four atlas cells.
+    changed |= ImGui::Checkbox("fades", &cull.lodFade);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("impostor blend", &cull.impostorBlend);
     if (changed) requests.cull = cull;
     bool shadows = state.shadows;
     if (ImGui::Checkbox("shadows", &shadows)) requests.shadows = shadows;

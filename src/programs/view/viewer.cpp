@@ -214,6 +214,8 @@ void Viewer::apply(const PanelRequests& requests) {
         const app::CullOptions& cull = *requests.cull;
         scene_.renderer().setCulling(cull.mode, cull.lod, cull.impostors);
         scene_.renderer().setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
+        scene_.renderer().library().setLodFade(cull.lodFade);
+        scene_.renderer().library().setImpostorBlend(cull.impostorBlend);
     }
     if (requests.shadows) scene_.setShadows(*requests.shadows);
     try {
