@@ -75,11 +75,17 @@ inline constexpr float kHorizonColor[3] = {0.55f, 0.7f, 0.9f};
 enum class Method { TwoPass, TwoPassDirect, VertexShader, VertexShaderInstanced, Compute, Static };
 enum class Animation { Gpu, Cpu };
 enum class Culling { Gpu, Cpu, Off };
+// Which rasterizer draws the impostors (docs/compute-raster.md): the hardware's; a compute pass into a
+// visibility buffer (64-bit atomics), resolved in the colour pass; or each impostor by its size on
+// screen (small ones in compute). Compute needs shaderInt64 and shaderBufferInt64Atomics enabled on the
+// device and a single-sampled target (else Renderer throws Unsupported); auto falls back to hardware.
+enum class Raster { Hardware, Compute, Auto };
 // Names for reports and menus: "two-pass", "two-pass-direct", "vs", "vs-instanced", "compute",
 // "static"; "gpu", "cpu"; "gpu", "cpu", "off".
 const char* methodName(Method method);
 const char* animationName(Animation animation);
 const char* cullingName(Culling culling);
+const char* rasterName(Raster raster);  // "hardware", "compute", "auto"
 
 // The host's colour pass.
 struct TargetFormat {
@@ -104,6 +110,7 @@ struct RendererSettings {
     float impostorThreshold = 32.0f;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
+    Raster raster = Raster::Hardware;    // the impostors' rasterizer (hardware: the frame as before it)
     bool shadows = true;
     // Casters drawn into the shadow map at a level from their size in the map (texels of pose-sphere
     // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at

@@ -11,6 +11,7 @@
 #include "api/renderer_data.h"
 #include "frame/memory_plan.h"
 #include "gpu/buffer.h"
+#include "render/raster_mode.h"
 #include "render/scene_pass.h"
 #include "skin/storage_ranges.h"
 
@@ -31,6 +32,15 @@ skin::Method internalMethod(Method method) {
         case Method::Static: return skin::Method::Static;
     }
     throw Error(ErrorCode::InvalidArgument, "unknown skinning method " + std::to_string(static_cast<int>(method)));
+}
+
+render::RasterMode internalRaster(Raster raster) {
+    switch (raster) {
+        case Raster::Hardware: return render::RasterMode::Hardware;
+        case Raster::Compute: return render::RasterMode::Compute;
+        case Raster::Auto: return render::RasterMode::Auto;
+    }
+    throw Error(ErrorCode::InvalidArgument, "unknown raster mode " + std::to_string(static_cast<int>(raster)));
 }
 
 render::CullSettings cullSettings(const RendererSettings& s) {
@@ -69,6 +79,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.shadowMapSize = s.shadowMapSize;
     o.framesInFlight = s.framesInFlight;
     o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
+    o.raster = internalRaster(s.raster);
     return o;
 }
 
@@ -115,6 +126,7 @@ const char* methodName(Method method) { return skin::methodName(detail::internal
 const char* animationName(Animation animation) {
     return render::animationPathName(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
 }
+const char* rasterName(Raster raster) { return render::rasterModeName(detail::internalRaster(raster)); }
 const char* cullingName(Culling culling) { return render::cullModeName(detail::cullSettings({.culling = culling}).mode); }
 
 DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {

@@ -35,7 +35,7 @@ void GpuTest::SetUp() {
     vkGetPhysicalDeviceFeatures(this->device->physicalDevice, &features);
     context = std::make_unique<gpu::VulkanContext>(gpu::BorrowedHandles{
         this->device->instance, this->device->physicalDevice, this->device->device, this->device->queueFamily,
-        features.fragmentStoresAndAtomics == VK_TRUE, this->device->queue, true});
+        features.fragmentStoresAndAtomics == VK_TRUE, this->device->queue, true, this->device->int64Atomics()});
     hosts()[context.get()] = this->device.get();
 }
 

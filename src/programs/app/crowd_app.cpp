@@ -151,6 +151,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.meshCapacity = meshCapacity;
     settings.shadows = shadows;
     settings.shadowLod = cull.shadowLod;
+    settings.raster = cull.raster;
     return settings;
 }
 

@@ -42,6 +42,7 @@ usage: crowd-bench [options]
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
+  --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default hardware)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
   --impostors on|off   the impostor level for far characters (default off); with

@@ -44,6 +44,10 @@ usage: crowd-render [options]
   --aa off|msaa2|msaa4|msaa8
                           anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
                           and ground, averaged into the picture (default %AA%)
+  --raster hardware|compute|auto
+                          which rasterizer draws the impostors: the hardware's, a compute pass into a
+                          visibility buffer, or by size on screen (compute up to 64 px); compute needs
+                          64-bit atomics and --aa off, auto falls back to hardware (default hardware)
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)
@@ -122,6 +126,12 @@ std::string formatPixels(float pixels) {
     return text;
 }
 
+crowdgpu::Raster parseRaster(const std::string& flag, const std::string& text) {
+    for (const crowdgpu::Raster raster : {crowdgpu::Raster::Hardware, crowdgpu::Raster::Compute, crowdgpu::Raster::Auto})
+        if (text == crowdgpu::rasterName(raster)) return raster;
+    throw app::Error(flag + ": '" + text + "' is not hardware, compute or auto");
+}
+
 bool parseOnOff(const std::string& flag, const std::string& text) {
     if (text == "on") return true;
     if (text == "off") return false;
@@ -197,6 +207,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
         else if (flag == "--shadow-lod") options.cull.shadowLod = parseOnOff(flag, next());
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
+        else if (flag == "--raster") options.cull.raster = parseRaster(flag, next());
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
             options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);

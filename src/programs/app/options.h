@@ -30,6 +30,8 @@ struct CullOptions {
     bool impostors = false;
     float impostorThreshold = 32.0f;
     bool shadowLod = true;  // casters' level in the shadow map from their size there (crowdgpu::RendererSettings)
+    // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
+    crowdgpu::Raster raster = crowdgpu::Raster::Hardware;
 };
 
 // What a crowd is: models, size, clip, seed.

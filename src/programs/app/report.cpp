@@ -96,9 +96,9 @@ std::vector<app::FrameStats> RecentFrames::frames() const {
 
 std::string impostorSummary(const RenderOptions& options) {
     if (!options.cull.impostors) return ", impostors off";
-    char text[96];
-    std::snprintf(text, sizeof text, ", impostors below %g px (mesh capacity %u)", options.cull.impostorThreshold,
-                  options.meshCapacity);
+    char text[128];
+    std::snprintf(text, sizeof text, ", impostors below %g px (mesh capacity %u, raster %s)",
+                  options.cull.impostorThreshold, options.meshCapacity, crowdgpu::rasterName(options.cull.raster));
     return text;
 }
 
