@@ -17,6 +17,9 @@ namespace render {
 
 namespace {
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+// Filled each frame, read back by the tests.
+constexpr VkBufferUsageFlags kUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
 // Workgroups of the raster pass at most: its threads stride over the impostor list, so a crowd of
 // millions needs no dispatch larger than a device holds at once (an H100 keeps about 270,000 threads).
 constexpr std::uint32_t kMaxWorkgroups = 4096;
@@ -39,11 +42,10 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
         throw gpu::Error("the compute rasterizer draws single-sampled targets only (--aa off)",
                          gpu::ErrorKind::Unsupported);
     try {
-        split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                   gpu::MemoryUse::DeviceLocal, "impostor raster split");
+        split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage, gpu::MemoryUse::DeviceLocal,
+                                   "impostor raster split");
         hardwareList_ = gpu::createBuffer(context, std::uint64_t{std::max(lists.characterCount(), 1u)} * 4,
-                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::DeviceLocal,
+                                          kUsage, gpu::MemoryUse::DeviceLocal,
                                           "impostors left to the hardware rasterizer");
         // The slots' set layouts, with any buffer behind them (never bound).
         const gpu::BufferBinding any{kStorage, split_.buffer};
@@ -108,8 +110,7 @@ void ImpostorRaster::makeVisibility(std::uint32_t index, VkExtent2D extent) {
     slot.resolveSet.reset();
     gpu::destroyBuffer(context_, slot.visibility);
     slot.extent = extent;
-    slot.visibility = gpu::createBuffer(context_, std::uint64_t{extent.width} * extent.height * 8,
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+    slot.visibility = gpu::createBuffer(context_, std::uint64_t{extent.width} * extent.height * 8, kUsage,
                                         gpu::MemoryUse::DeviceLocal, "visibility buffer");
     const gpu::BufferBinding raster[] = {{kStorage, atlas_.modelTable().buffer},
                                          {kStorage, crowd_.characters().buffer},
@@ -132,11 +133,11 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                        {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
-                       {VK_PIPELINE_STAGE_2_CLEAR_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                       {VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     vkCmdFillBuffer(cmd, slot.visibility.buffer, 0, VK_WHOLE_SIZE, VISIBILITY_EMPTY_HIGH);
     vkCmdFillBuffer(cmd, split_.buffer, 0, VK_WHOLE_SIZE, 0u);
-    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     const VkDescriptorSet sets[2] = {slot.rasterSet->set(), atlas_.set()};

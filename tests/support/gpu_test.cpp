@@ -78,6 +78,9 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.shadows = options.shadows;
     settings.shadowLod = options.cull.shadowLod;
     settings.shadowMapSize = options.shadowMapSize;
+    settings.raster = options.raster == render::RasterMode::Compute ? crowdgpu::Raster::Compute
+                      : options.raster == render::RasterMode::Auto  ? crowdgpu::Raster::Auto
+                                                                    : crowdgpu::Raster::Hardware;
     return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
 }
 
