@@ -203,6 +203,7 @@ app::BenchResult measure(const app::HostDevice& context, const app::CrowdModels&
     result.vertices = model.vertexCount();
     result.triangles = model.triangleCount();
     result.frame.antiAliasing = app::antiAliasingName(options.scene.samples);  // also on a skipped row
+    result.frame.raster = crowdgpu::rasterName(options.scene.cull.raster);
     app::ScenarioOptions scenario;
     scenario.scene = options.scene;
     scenario.count = count;

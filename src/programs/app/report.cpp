@@ -134,6 +134,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["culling"] = s.culling;
     json["animation"] = s.animation;
     json["aa"] = s.antiAliasing;
+    json["raster"] = s.raster;
     json["median_visible_per_lod"] = {s.medianVisible[0], s.medianVisible[1], s.medianVisible[2]};
     json["median_triangles"] = s.medianTriangles;
     json["median_impostors"] = s.medianImpostors;
