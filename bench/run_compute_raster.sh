@@ -20,7 +20,8 @@
 #                     SWEEP_COUNTS="3000 300 30" ISSUE_COUNTS=3000 bash bench/run_compute_raster.sh
 # FRAMES (default 60) and WARMUP (10) as crowd-bench's --frames and --warmup; DEVICE (NVIDIA): part of the
 # device's name, empty for the first device; SIZE (3840x2160); SWEEP_COUNTS (1000000 250000 62500 15625
-# 3906 977 244); ISSUE_SIZE (1920x1080); ISSUE_COUNTS (1000000 4000000 10000000).
+# 3906 977 244); ISSUE_SIZE (1920x1080); ISSUE_COUNTS (1000000 4000000 10000000); SECTIONS ("1 2 3"): which
+# of the three to run.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
 frames=${FRAMES:-60}
@@ -46,13 +47,15 @@ find_device run_compute_raster
 failures=0
 every_impostor=(--impostors on --lod-thresholds 100000,50000 --impostor-threshold 40000)
 rasters=(hardware compute auto)
+sections=" ${SECTIONS:-1 2 3} "
+section() { [[ $sections == *" $1 "* ]]; }
 
 # 1. The sweep (hardware and compute; auto would send the large ones to the hardware), after the ground
 # alone (one impostor: the scene's ground fills the view from above whatever the crowd).
-run "sweep-ground" "$bin/crowd-bench" "${device_flag[@]}" --scene stress --counts 1 --methods compute \
+section 1 && run "sweep-ground" "$bin/crowd-bench" "${device_flag[@]}" --scene stress --counts 1 --methods compute \
   "${every_impostor[@]}" --shadows off --raster hardware --frames "$frames" --warmup "$warmup" --size "$size" \
   --csv "$res/sweep-ground.csv"
-for count in "${sweep_counts[@]}"; do
+section 1 && for count in "${sweep_counts[@]}"; do
   for raster in hardware compute; do
     run "sweep-$count-$raster" "$bin/crowd-bench" "${device_flag[@]}" --scene stress --counts "$count" --methods compute \
       "${every_impostor[@]}" --shadows off --raster $raster --frames "$frames" --warmup "$warmup" --size "$size" \
@@ -61,7 +64,7 @@ for count in "${sweep_counts[@]}"; do
 done
 
 # 2. The issue's frames.
-for count in "${issue_counts[@]}"; do
+section 2 && for count in "${issue_counts[@]}"; do
   for start in 0 20; do
     for raster in "${rasters[@]}"; do
       run "issue-$count-t$start-$raster" "$bin/crowd-bench" "${device_flag[@]}" --scene stress --counts "$count" \
@@ -72,7 +75,7 @@ for count in "${issue_counts[@]}"; do
 done
 
 # 3. Pictures of the first crowd.
-for start in 0 20; do
+section 3 && for start in 0 20; do
   for raster in "${rasters[@]}"; do
     run "picture-t$start-$raster" "$bin/crowd-render" "${device_flag[@]}" --scene stress --count "${issue_counts[0]}" \
       --start $start --method compute --impostors on --raster $raster --frames 3 --size "$issue_size" \
@@ -83,6 +86,7 @@ done
 ok() { [[ $(csv_value "$1" status) == ok ]]; }
 
 {
+  section 1 && {
   echo
   echo "1. Impostors per second, stress from above at $size, every character an impostor, shadows off; medians over"
   echo "$frames frames after $warmup warm-up ($(csv_value "$res/sweep-${sweep_counts[0]}-hardware.csv" pass_clock))."
@@ -105,6 +109,8 @@ ok() { [[ $(csv_value "$1" status) == ok ]]; }
           hw * 1e6 / i, rate(hw), cr, cd, cs * 1e6 / i, rate(cs), (hw > 0 ? cs / hw : 0)
       }'
   done
+  }
+  section 2 && {
   echo
   echo "2. The issue's frames: stress at $issue_size, impostors at their defaults, shadows on; frame: wall clock between"
   echo "frame starts (two in flight); GPU ms per pass."
@@ -121,6 +127,8 @@ ok() { [[ $(csv_value "$1" status) == ok ]]; }
       done
     done
   done
+  }
+  section 3 && {
   echo
   echo "3. Pictures: ${issue_counts[0]} soldiers at $issue_size, against --raster hardware"
   for start in 0 20; do
@@ -129,6 +137,7 @@ ok() { [[ $(csv_value "$1" status) == ok ]]; }
         "$res/pictures/stress-${issue_counts[0]}-t$start-$raster.png" 2>&1)"
     done
   done
+  }
 } | tee "$res/summary.txt"
 tar -czf "$out/compute-raster.tgz" -C /tmp compute-raster
 [[ $failures == 0 ]] || { echo "run_compute_raster: $failures run(s) failed (see their .txt in compute-raster.tgz)"; exit 1; }

@@ -14,8 +14,10 @@ const char* rasterModeName(RasterMode mode);
 std::optional<RasterMode> parseRasterMode(std::string_view name);
 
 // Under auto, the longest side (pixels) of an impostor's screen rectangle that the compute rasterizer
-// still draws; larger ones go to the hardware path. Chosen from the measured crossover
-// (docs/compute-raster.md, bench/run_compute_raster.sh).
-inline constexpr float kAutoRasterLimitPixels = 64.0f;
+// still draws; larger ones go to the hardware path. The default impostor threshold, so every impostor of
+// its ordinary size goes to compute and only those the mesh cap demoted while large, or seen very near,
+// stay on the hardware; to be set from the H100's crossover (docs/compute-raster.md, "Choosing auto's
+// limit"; bench/run_compute_raster.sh).
+inline constexpr float kAutoRasterLimitPixels = 32.0f;
 
 }  // namespace render
