@@ -27,6 +27,11 @@ layout(std430, set = 0, binding = 5) buffer Split { ImpostorSplit split; };
 layout(std430, set = 0, binding = 6) writeonly buffer HardwareImpostors { uint hardwareImpostors[]; };
 layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
 
+// Impostors this workgroup rasterized: summed in shared memory and added to the split once per
+// workgroup, since millions of atomics on one word would serialize (a few ms for 10,000,000 on one
+// address); the rare hardware-bound impostors take the global atomic directly.
+shared uint rasterized;
+
 // The quad's screen rectangle in pixels (viewport-relative); false when a corner is at or behind the
 // eye's plane (the hardware path clips such a quad).
 bool screenRectangle(ImpostorQuadClip k, out vec2 low, out vec2 high) {
@@ -43,7 +48,8 @@ bool screenRectangle(ImpostorQuadClip k, out vec2 low, out vec2 high) {
     return true;
 }
 
-void rasterize(uint index) {
+// Returns whether the impostor was rasterized here (not left to the hardware).
+bool rasterize(uint index) {
     uint character = impostors[index];
     CharacterRecord record = characters[character];
     ImpostorModel m = impostorModels[record.ids.x];
@@ -52,9 +58,8 @@ void rasterize(uint index) {
     vec2 low, high;
     if (!screenRectangle(k, low, high) || max(high.x - low.x, high.y - low.y) > raster.viewport.z) {
         hardwareImpostors[atomicAdd(split.hardwareCount, 1u)] = character;
-        return;
+        return false;
     }
-    atomicAdd(split.computeCount, 1u);
     // Pixels whose centre (x + 0.5, y + 0.5) lies in the rectangle, inside the viewport.
     ivec2 extent = ivec2(raster.viewport.xy);
     ivec2 first = max(ivec2(ceil(low - 0.5)), ivec2(0));
@@ -68,9 +73,17 @@ void rasterize(uint index) {
             uint64_t word = (uint64_t(floatBitsToUint(p.depth)) << 32) | uint64_t(index);
             atomicMin(visibility[uint(y) * uint(extent.x) + uint(x)], word);
         }
+    return true;
 }
 
 void main() {
+    if (gl_LocalInvocationIndex == 0u) rasterized = 0u;
+    barrier();
     uint count = min(impostorFrame.count, raster.limits.x);
-    for (uint index = gl_GlobalInvocationID.x; index < count; index += raster.limits.y) rasterize(index);
+    uint mine = 0u;
+    for (uint index = gl_GlobalInvocationID.x; index < count; index += raster.limits.y)
+        mine += rasterize(index) ? 1u : 0u;
+    if (mine > 0u) atomicAdd(rasterized, mine);
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && rasterized > 0u) atomicAdd(split.computeCount, rasterized);
 }

@@ -351,6 +351,51 @@ TEST_F(GpuTest, AnImpostorCrossingAutosLimitKeepsItsPixels) {
     EXPECT_GE(onHardware, 2u);
 }
 
+// Two frames in flight and a target that changes size (a viewer's window): each frame slot's visibility
+// buffer follows the viewport, and the picture after the resize is the hardware path's at the new size
+// (99.5 % of pixels within 2/255), with validation and synchronization validation silent.
+TEST_F(GpuTest, ComputeRasterFollowsATargetThatChangesSize) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    app::SceneOptions scene;
+    scene.count = 300;
+    crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
+    test::RendererOptions options = rasterOptions({160, 90}, render::RasterMode::Hardware);
+    options.framesInFlight = 2;
+    options.cull.impostorThreshold = 20.0f;
+    test::TestRenderer hardware(*device, crowd, options);
+    options.atlas = hardware.impostorAtlas();
+    options.raster = render::RasterMode::Compute;
+    test::TestRenderer compute(*device, crowd, options);
+    const app::CrowdShape shape = test::shapeOf(crowd);
+    auto frameAt = [&](test::TestRenderer& r, VkExtent2D size, int frames) {
+        if (r.extent().width != size.width || r.extent().height != size.height) r.resize(size);
+        const float aspect = float(size.width) / float(size.height);
+        for (int i = 0; i < frames; ++i) {
+            r.camera = app::cameraOnPath(app::CameraPath::Framed, shape, aspect, 0.0);
+            r.renderFrame(2.0 + 0.1 * i);
+        }
+        r.finish();
+        const render::LodCounts lods = test::internalCounts(r.takeStats().back().lods);
+        EXPECT_GT(lods.impostors, 50u);
+        return r.readback();
+    };
+    frameAt(compute, {160, 90}, 3);
+    for (const VkExtent2D size : {VkExtent2D{240, 135}, VkExtent2D{120, 68}}) {
+        const app::Rgba8Image c = frameAt(compute, size, 3);
+        const app::Rgba8Image h = frameAt(hardware, size, 3);
+        const double matching = test::fractionOfMatchingPixels(h, c, 2);
+        std::printf("%ux%u: %.2f %% of pixels within 2/255 of the hardware path's\n", size.width, size.height,
+                    100.0 * matching);
+        EXPECT_GE(matching, 0.995);
+        ASSERT_NE(compute.recorder().impostorRaster(), nullptr);
+        for (std::uint32_t slot = 0; slot < 2; ++slot) {
+            const VkExtent2D e = compute.recorder().impostorRaster()->visibilityExtent(slot);
+            EXPECT_EQ(e.width, size.width);
+            EXPECT_EQ(e.height, size.height);
+        }
+    }
+}
+
 // Compute refuses a multisampled target in one line; auto falls back to the hardware path there.
 TEST_F(GpuTest, ComputeRasterRefusesMultisamplingAndAutoFallsBack) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
