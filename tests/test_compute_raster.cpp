@@ -220,7 +220,8 @@ TEST_F(GpuTest, ComputeRasterMergesWithMeshesByDepth) {
     if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) keepImages("raster-overlap", h.image, c.image);
 }
 
-// The visibility buffer's ids: five soldiers far apart, all impostors, rasterized in compute. Every
+// The visibility buffer's ids: seven soldiers far apart, all impostors, rasterized in compute (five
+// large enough for the second dispatch, two far ones drawn by one thread each). Every
 // covered pixel's id names, through the impostor list, the soldier whose pose sphere's projection (CPU,
 // from the camera's matrices) holds the pixel, and its depth lies within that sphere's depth range;
 // every soldier covers pixels. (Impostors have no triangles: a quad's pixels are those whose centre
@@ -228,10 +229,12 @@ TEST_F(GpuTest, ComputeRasterMergesWithMeshesByDepth) {
 // top-left rule is at stake; mesh triangles stay on the hardware path.)
 TEST_F(GpuTest, VisibilityIdsDecodeToTheCharacterUnderThePixel) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    // Five near ones (over IMPOSTOR_RASTER_LARGE_PIXELS: a workgroup each) and two far ones (a thread each).
     std::vector<crowd::Character> five;
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < 7; ++i) {
         crowd::Character c;
-        c.position = glm::vec3(3.0f * float(i - 2), 0.0f, -4.0f * float(i % 2));
+        c.position = i < 5 ? glm::vec3(3.0f * float(i - 2), 0.0f, -4.0f * float(i % 2))
+                           : glm::vec3(i == 5 ? -5.0f : 5.0f, 0.0f, -26.0f);
         c.clip = static_cast<std::uint32_t>(i % soldier.clips.size());
         c.timeOffset = 0.2f * float(i);
         five.push_back(c);
@@ -247,7 +250,9 @@ TEST_F(GpuTest, VisibilityIdsDecodeToTheCharacterUnderThePixel) {
     camera.farPlane = 100.0f;
     renderer.camera = test::appCamera(camera);
     const RasterFrame frame = renderFrame(*context, renderer, 0.7);
-    ASSERT_EQ(frame.lods.impostors, 5u);
+    ASSERT_EQ(frame.lods.impostors, 7u);
+    EXPECT_EQ(frame.split.computeCount, 7u);
+    EXPECT_EQ(frame.split.largeCount, 5u);
     const render::FrameView view = render::frameViewOf(camera, {320, 120}, 0.7);
     const glm::mat4 viewProjection = view.projection * view.view;
     struct Projected {
@@ -268,16 +273,16 @@ TEST_F(GpuTest, VisibilityIdsDecodeToTheCharacterUnderThePixel) {
         spheres.push_back({(ndc * 0.5f + 0.5f) * glm::vec2(320.0f, 120.0f), r * focal / distance * 1.05f + 1.0f,
                            depthAt(world + r * towards), depthAt(world - r * towards)});
     }
-    std::vector<std::size_t> pixels(5, 0);
+    std::vector<std::size_t> pixels(7, 0);
     std::size_t wrong = 0, outOfDepth = 0;
     for (std::uint32_t y = 0; y < 120; ++y)
         for (std::uint32_t x = 0; x < 320; ++x) {
             const std::uint64_t word = frame.visibility[y * 320 + x];
             if (word == kEmpty) continue;
             const std::uint32_t index = static_cast<std::uint32_t>(word & 0xFFFFFFFFu);
-            ASSERT_LT(index, 5u);
+            ASSERT_LT(index, 7u);
             const std::uint32_t character = frame.impostorList[index];
-            ASSERT_LT(character, 5u);
+            ASSERT_LT(character, 7u);
             ++pixels[character];
             const Projected& s = spheres[character];
             if (glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - s.pixel) > s.radius) ++wrong;
@@ -286,9 +291,9 @@ TEST_F(GpuTest, VisibilityIdsDecodeToTheCharacterUnderThePixel) {
             std::memcpy(&depth, &bits, 4);
             if (depth < s.nearDepth || depth > s.farDepth) ++outOfDepth;
         }
-    for (int c = 0; c < 5; ++c) {
+    for (int c = 0; c < 7; ++c) {
         std::printf("soldier %d: %zu pixels, %.1f px across\n", c, pixels[c], 2.0 * spheres[c].radius);
-        EXPECT_GE(pixels[c], 40u) << "soldier " << c;
+        EXPECT_GE(pixels[c], c < 5 ? 40u : 4u) << "soldier " << c;
     }
     EXPECT_EQ(wrong, 0u);
     EXPECT_EQ(outOfDepth, 0u);

@@ -32,7 +32,7 @@ static_assert(MESH_CUT_COARSE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0 && MESH_CUT
 static_assert(sizeof(ImpostorDrawsHeader) == 16);
 static_assert(sizeof(ImpostorRasterPush) == 112 && offsetof(ImpostorRasterPush, viewport) == 80 &&
               offsetof(ImpostorRasterPush, limits) == 96);
-static_assert(sizeof(ImpostorSplit) == 16);
+static_assert(sizeof(ImpostorSplit) == 32 && offsetof(ImpostorSplit, largeDispatch) == 16);
 static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + 6 * 16 + 2 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160 &&
               offsetof(CullUniforms, lightPlanes) == 176 && offsetof(CullUniforms, shadow) == 272 &&

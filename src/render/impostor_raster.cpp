@@ -1,6 +1,7 @@
 #include "render/impostor_raster.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -42,14 +43,16 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
         throw gpu::Error("the compute rasterizer draws single-sampled targets only (--aa off)",
                          gpu::ErrorKind::Unsupported);
     try {
-        split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage, gpu::MemoryUse::DeviceLocal,
-                                   "impostor raster split");
+        split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                                   gpu::MemoryUse::DeviceLocal, "impostor raster split");
         hardwareList_ = gpu::createBuffer(context, std::uint64_t{std::max(lists.characterCount(), 1u)} * 4,
                                           kUsage, gpu::MemoryUse::DeviceLocal,
                                           "impostors left to the hardware rasterizer");
+        largeList_ = gpu::createBuffer(context, std::uint64_t{std::max(lists.characterCount(), 1u)} * 4, kUsage,
+                                       gpu::MemoryUse::DeviceLocal, "large impostors for the compute rasterizer");
         // The slots' set layouts, with any buffer behind them (never bound).
         const gpu::BufferBinding any{kStorage, split_.buffer};
-        const gpu::BufferBinding rasterShape[7] = {any, any, any, any, any, any, any};
+        const gpu::BufferBinding rasterShape[8] = {any, any, any, any, any, any, any, any};
         rasterPrototype_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, rasterShape);
         resolvePrototype_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_FRAGMENT_BIT,
                                                                     std::span(&any, 1));
@@ -59,6 +62,8 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
         const VkPushConstantRange rasterPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::ImpostorRasterPush)};
         rasterLayout_ = gpu::createPipelineLayout(context, rasterSets, {&rasterPush, 1});
         rasterPipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, {});
+        const std::uint32_t largePass[] = {1u};
+        largePipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, largePass);
 
         const gpu::BufferBinding drawBindings[] = {{kStorage, pool.modelTable().buffer},
                                                    {kStorage, atlas.modelTable().buffer},
@@ -89,6 +94,8 @@ void ImpostorRaster::release() {
     if (resolvePipeline_) vkDestroyPipeline(context_.device, resolvePipeline_, nullptr);
     if (resolveLayout_) vkDestroyPipelineLayout(context_.device, resolveLayout_, nullptr);
     if (rasterPipeline_) vkDestroyPipeline(context_.device, rasterPipeline_, nullptr);
+    if (largePipeline_) vkDestroyPipeline(context_.device, largePipeline_, nullptr);
+    largePipeline_ = VK_NULL_HANDLE;
     if (rasterLayout_) vkDestroyPipelineLayout(context_.device, rasterLayout_, nullptr);
     resolvePipeline_ = VK_NULL_HANDLE, resolveLayout_ = VK_NULL_HANDLE;
     rasterPipeline_ = VK_NULL_HANDLE, rasterLayout_ = VK_NULL_HANDLE;
@@ -101,6 +108,7 @@ void ImpostorRaster::release() {
     resolvePrototype_.reset();
     drawSet_.reset();
     gpu::destroyBuffer(context_, hardwareList_);
+    gpu::destroyBuffer(context_, largeList_);
     gpu::destroyBuffer(context_, split_);
 }
 
@@ -118,7 +126,8 @@ void ImpostorRaster::makeVisibility(std::uint32_t index, VkExtent2D extent) {
                                          {kStorage, lists_.impostorFrame().buffer},
                                          {kStorage, slot.visibility.buffer},
                                          {kStorage, split_.buffer},
-                                         {kStorage, hardwareList_.buffer}};
+                                         {kStorage, hardwareList_.buffer},
+                                         {kStorage, largeList_.buffer}};
     slot.rasterSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, raster);
     const gpu::BufferBinding resolve[] = {{kStorage, slot.visibility.buffer}};
     slot.resolveSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_FRAGMENT_BIT, resolve);
@@ -131,12 +140,17 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
     // The previous frame's reads of the split, the hardware list and the visibility buffer come first.
     gpu::memoryBarrier(cmd,
                        {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
-                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                            VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT},
                        {VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     vkCmdFillBuffer(cmd, slot.visibility.buffer, 0, VK_WHOLE_SIZE, VISIBILITY_EMPTY_HIGH);
-    vkCmdFillBuffer(cmd, split_.buffer, 0, VK_WHOLE_SIZE, 0u);
+    // The split's counts to 0 and the second dispatch's y and z to 1 (ranges apart: one write each).
+    constexpr VkDeviceSize dispatchY = offsetof(gpu::ImpostorSplit, largeDispatch) + 4;
+    vkCmdFillBuffer(cmd, split_.buffer, 0, dispatchY, 0u);
+    vkCmdFillBuffer(cmd, split_.buffer, dispatchY, 8, 1u);
+    vkCmdFillBuffer(cmd, split_.buffer, dispatchY + 8, sizeof(gpu::ImpostorSplit) - dispatchY - 8, 0u);
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
@@ -149,10 +163,19 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
     gpu::ImpostorRasterPush push{};
     push.viewProjection = viewProjection;
     push.cameraPosition = glm::vec4(eye, 1.0f);
-    push.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height), limitPixels_, 0.0f);
-    push.limits = glm::uvec4(capacity, groups * IMPOSTOR_RASTER_WORKGROUP, 0u, 0u);
+    push.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height), limitPixels_,
+                              static_cast<float>(IMPOSTOR_RASTER_LARGE_PIXELS));
+    push.limits = glm::uvec4(capacity, groups * IMPOSTOR_RASTER_WORKGROUP,
+                             std::min(capacity, context_.properties.limits.maxComputeWorkGroupCount[0]), 0u);
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, groups, 1, 1);
+    // The large impostors: a workgroup each, as many as the first dispatch listed.
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                       {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, largePipeline_);
+    vkCmdDispatchIndirect(cmd, split_.buffer, offsetof(gpu::ImpostorSplit, largeDispatch));
     // The impostor draws' pass reads the split's count, the colour draw the hardware list, the resolve
     // the visibility buffer.
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
@@ -175,7 +198,7 @@ void ImpostorRaster::recordResolve(VkCommandBuffer cmd, std::uint32_t index, VkD
 }
 
 std::uint64_t ImpostorRaster::bytes() const {
-    std::uint64_t total = split_.size + hardwareList_.size;
+    std::uint64_t total = split_.size + hardwareList_.size + largeList_.size;
     for (const Slot& slot : slots_) total += slot.visibility.size;
     return total;
 }

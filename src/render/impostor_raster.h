@@ -3,7 +3,8 @@
 // rasterizes the frame's impostors into a visibility buffer (a 64-bit word per pixel: depth bits above,
 // the impostor's place in the list below, kept by atomic min), except those larger on screen than
 // its limit or crossing the near plane, which it lists for the hardware path (the impostor draw reads
-// that list, ImpostorDraw's `split`). Inside the colour pass a full-screen resolve shades the covered
+// that list, ImpostorDraw's `split`); those too large for one thread to walk get a workgroup each in a
+// second, indirect dispatch. Inside the colour pass a full-screen resolve shades the covered
 // pixels with the hardware path's shading and writes their depth, so the depth test merges them with
 // the hardware-drawn meshes and impostors. Shadows stay on the hardware path.
 #include <cstdint>
@@ -69,6 +70,7 @@ private:
     const ImpostorAtlas& atlas_;
     float limitPixels_;
     gpu::Buffer split_, hardwareList_;
+    gpu::Buffer largeList_;  // the second dispatch's impostors (places in the impostor list)
     std::vector<Slot> slots_;
     std::unique_ptr<gpu::DescriptorBundle> drawSet_;  // what the resolve reads besides the visibility
     // Sets of the slots' layouts, kept for the pipeline layouts: a slot's sets are made again (identical
@@ -76,6 +78,7 @@ private:
     std::unique_ptr<gpu::DescriptorBundle> rasterPrototype_, resolvePrototype_;
     VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
     VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
+    VkPipeline largePipeline_ = VK_NULL_HANDLE;  // the same shader's second dispatch (LARGE_PASS)
     VkPipelineLayout resolveLayout_ = VK_NULL_HANDLE;
     VkPipeline resolvePipeline_ = VK_NULL_HANDLE;
 };
