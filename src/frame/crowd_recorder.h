@@ -2,10 +2,12 @@
 // The crowd's frame as record calls into command buffers somebody else owns and submits:
 //   recordSetup       uploads and the impostor bake (once, and again after setCull turns impostors on)
 //   recordCompute     outside any rendering pass: CPU animation upload or GPU motion -> cull and LOD
-//                     -> GPU palettes -> skinning (the method) -> impostor lists -> shadow map clear
+//                     -> GPU palettes -> skinning (the method) -> compute raster of impostors (--raster
+//                     compute|auto) -> impostor lists -> shadow map clear
 //   recordShadows     the shadow casters into the renderer's own shadow map (a depth pass of its own)
 //   recordGround      inside the host's colour pass: the checkered ground (optional)
-//   recordCharacters  inside the host's colour pass: the characters, then the impostors
+//   recordCharacters  inside the host's colour pass: the characters, then the impostors (hardware-drawn,
+//                     then the visibility buffer's resolve)
 // Nothing here submits, waits or signals. A frame slot's resources (bone staging, readback of the
 // level counts, uniforms) are reused when the slot comes round again: the host must have waited for
 // that slot's previous frame first. The crowd is planned by its owner (crowd::Crowd::advanceTo).
