@@ -185,6 +185,40 @@ struct ImpostorDrawsHeader {
     uint unused2;
 };
 
+// ---- The compute rasterizer (render/impostor_raster.h, docs/compute-raster.md) ----
+// A visibility buffer holds one 64-bit word per pixel: the depth's float bits above (a depth in [0, 1]
+// orders as its bits do, so a 64-bit atomic min keeps the nearest) and the rasterized item's id below.
+// Cleared to all ones (nothing drawn). An impostor's id is its place in the frame's impostor list.
+#define VISIBILITY_EMPTY_HIGH 0xFFFFFFFFu
+#define IMPOSTOR_RASTER_WORKGROUP 64
+
+// The impostor rasterizer's push constants.
+struct ImpostorRasterPush {
+    mat4 viewProjection;
+    vec4 cameraPosition;  // xyz: the eye
+    vec4 viewport;        // x, y: the viewport's extent in pixels; z: the largest impostor the compute path
+                          // draws (its screen rectangle's longer side, pixels; larger ones go to the
+                          // hardware path); w: the largest one a single thread draws (larger ones get a
+                          // workgroup each in a second dispatch)
+    uvec4 limits;         // x: the impostor list's capacity, y: threads in the dispatch (they stride over
+                          // it), z: the most workgroups the second dispatch may have, w: 1 to blend four
+                          // atlas cells, 0 the nearest (impostor-blend)
+};
+
+// The impostors the compute rasterizer leaves to the hardware path this frame (too large on screen, or
+// crossing the near plane): their count, listed in a list of their own that the colour pass's impostor
+// draw reads instead of the whole impostor list.
+// Impostors larger than a thread should walk alone are listed too (by their place in the impostor list)
+// for a second dispatch, indirect, a workgroup each.
+struct ImpostorSplit {
+    uint hardwareCount;
+    uint computeCount;   // impostors rasterized in compute, either dispatch (reports and tests)
+    uint largeCount;     // impostors that asked for the second dispatch (beyond its most: drawn by one thread)
+    uint unused;
+    uvec4 largeDispatch; // x: impostors listed for the second dispatch (its workgroups), y = z = 1
+};
+#define IMPOSTOR_RASTER_LARGE_PIXELS 16.0
+
 // ---- Animation on the GPU (anim/clip_library.h flattens the clips; render/animation_pass runs them) ----
 
 // Samples of a clip's root-motion curve per cycle (plus one: the curve's end, the stride).

@@ -6,12 +6,12 @@
 // coverage are cut; multisampled, the coverage goes out as alpha and the pipeline's alpha to coverage
 // turns it into the share of the pixel's samples the impostor covers. Either way the coverage is the
 // blended one, the same the shadow pass cuts at half.
-// Its shadow is looked up a pose-sphere radius nearer the light: the quad stands in for a body as deep as
-// that sphere, and its own shadow (a quad facing the light through the sphere's centre) must not fall on it.
+// The lighting is impostor_shade.glsl.inc's, shared with the compute rasterizer's resolve.
 #include "gpu_types.h"
 #include "shading.glsl.inc"
 #include "impostor_sample.glsl.inc"
 #include "fade_dither.glsl.inc"
+#include "impostor_shade.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(set = 2, binding = 0) uniform sampler2DArray atlasAlbedo;
@@ -34,15 +34,11 @@ layout(location = 0) out vec4 outColor;
 void main() {
     vec4 albedo = impostorTexel(atlasAlbedo, kBlend, vCells, vWeights, vGrid, vLocal);
     if (albedo.a < (kAlphaToCoverage ? 1.0 / 255.0 : 0.5)) discard;  // (nothing covered: no depth either)
-    vec4 packed = impostorTexel(atlasNormal, kBlend, vCells, vWeights, vGrid, vLocal);
+    vec3 lit = impostorShade(scene, atlasNormal, kBlend, vCells, vWeights, vGrid, vLocal, albedo, vTint, vHeading, vWorld,
+                             vRadius, cameraPosition.xyz);
     // Fading from its last mesh level (which draws the other pixels): the coarser level's share. After
     // the texture reads, which need their neighbours' places for derivatives.
     if (vFadeShare > 0.0 && !fadeDraws(gl_FragCoord.xy, vFadeShare, true)) discard;
-    vec3 n = packed.rgb / packed.a * 2.0 - 1.0;
-    float c = vHeading.x, s = vHeading.y;
-    vec3 normal = vec3(c * n.x + s * n.z, n.y, c * n.z - s * n.x);
-    vec3 lit = shadeLitFrom(scene, normal, albedo.rgb / albedo.a * vTint, vWorld,
-                            vWorld + scene.lightDirection.xyz * vRadius, cameraPosition.xyz);
     // Alpha to coverage reads the coverage from alpha (and the pipeline does not write it); single-sampled
     // the pixel is opaque.
     outColor = vec4(lit, kAlphaToCoverage ? albedo.a : 1.0);

@@ -13,6 +13,7 @@
 #include "impostor_pose.glsl.inc"
 #include "impostor_cell.glsl.inc"
 #include "fade_dither.glsl.inc"
+#include "impostor_quad.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(push_constant) uniform Push { vec4 cameraPosition; };
@@ -29,37 +30,23 @@ layout(location = 6) flat out vec2 vWeights;  // impostorBlend's weights
 layout(location = 7) flat out uvec2 vGrid;    // cells per atlas row, per layer
 layout(location = 8) flat out float vFadeShare;  // fading from its last mesh level: the impostor's share
 
-// Model frame to world: the heading's turn about +y (as worldSphere and characterTransform turn it).
-vec3 turn(vec3 v, float c, float s) { return vec3(c * v.x + s * v.z, v.y, c * v.z - s * v.x); }
-
 void main() {
     const vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
     uint index = impostors[gl_VertexIndex / 4];
     CharacterRecord character = characters[index];
-    ImpostorModel m = impostorModels[character.ids.x];
+    ImpostorQuad q = impostorQuad(character, impostorModels[character.ids.x], cameraPosition.xyz, SHADOW_PASS,
+                                  scene.lightDirection.xyz);
+    if (!BLEND) q.blend = impostorNearest(q.blend);
     vec2 corner = corners[gl_VertexIndex % 4];
-
-    float c = cos(character.placement.w);
-    float s = sin(character.placement.w);
-    float scale = character.tint.w;
-    vec3 centre = character.placement.xyz + turn(m.square.xyz * scale, c, s);
-    vec3 towards = SHADOW_PASS ? scene.lightDirection.xyz : normalize(cameraPosition.xyz - centre);
-    vec3 towardsModel = vec3(c * towards.x - s * towards.z, towards.y, c * towards.z + s * towards.x);
-    ImpostorPose pose = impostorPose(character);
-    ImpostorBlend blend = impostorBlend(m, pose.clip, pose.phase, towardsModel);
-    if (!BLEND) blend = impostorNearest(blend);
-    vec3 right, up;
-    impostorBasis(towardsModel, right, up);
-
-    vec3 world = centre + m.square.w * scale * (corner.x * turn(right, c, s) + corner.y * turn(up, c, s));
+    vec3 world = impostorCorner(q, corner);
     gl_Position = scene.viewProjection * vec4(world, 1.0);
-    vLocal = vec2(0.5 + 0.5 * corner.x, 0.5 - 0.5 * corner.y);
-    vCells = blend.cells;
-    vWeights = blend.weights;
-    vGrid = m.views.zw;
+    vLocal = impostorLocal(corner);
+    vCells = q.blend.cells;
+    vWeights = q.blend.weights;
+    vGrid = q.grid;
     vTint = character.tint.rgb;
-    vHeading = vec2(c, s);
+    vHeading = q.heading;
     vWorld = world;
-    vRadius = m.square.w * scale;
+    vRadius = q.halfSide;
     vFadeShare = fadeShareOf(characterStates[index]);
 }

@@ -5,6 +5,9 @@
 // draw's cost follows); draw k covers impostors k x IMPOSTOR_QUADS_PER_DRAW onwards through its
 // vertexOffset, so the vertex shader's gl_VertexIndex / 4 is the impostor. The shadow pass's draws
 // (from maxDraws on) cover the casting impostors, listed from `characters` on in the same list.
+// The colour pass's count is the first word of binding 2: the impostor frame's count (every impostor
+// in view), or, with the compute rasterizer (render/impostor_raster.h), the count of those it left to
+// the hardware path (ImpostorSplit.hardwareCount), whose own list the colour draw then reads.
 #include "gpu_types.h"
 
 layout(local_size_x = 64) in;
@@ -14,6 +17,7 @@ layout(push_constant) uniform Push {
     uint characters;  // where the casting impostors start in the impostor list
 };
 layout(std430, set = 0, binding = 0) readonly buffer Frame { ImpostorFrame impostorFrame; };
+layout(std430, set = 0, binding = 2) readonly buffer ColourCount { uint colourCount; };
 layout(std430, set = 0, binding = 1) writeonly buffer Draws {
     ImpostorDrawsHeader header;
     DrawIndexedCommand draws[];
@@ -31,7 +35,7 @@ void writeDraws(uint first, uint count, uint listBase) {
 
 void main() {
     if (gl_LocalInvocationIndex == 0u)
-        header = ImpostorDrawsHeader(drawsFor(impostorFrame.count), drawsFor(impostorFrame.shadowCount), 0u, 0u);
-    writeDraws(0u, impostorFrame.count, 0u);
+        header = ImpostorDrawsHeader(drawsFor(colourCount), drawsFor(impostorFrame.shadowCount), 0u, 0u);
+    writeDraws(0u, colourCount, 0u);
     writeDraws(maxDraws, impostorFrame.shadowCount, characters);
 }

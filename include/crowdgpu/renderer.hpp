@@ -80,12 +80,18 @@ enum class Culling { Gpu, Cpu, Off };
 // to the methods whose skinned vertices are in a buffer (all but vs and vs-instanced, which keep the
 // graphics pipeline); impostor casters stay on the graphics pipeline.
 enum class ShadowRaster { Hardware, Compute };
+// Which rasterizer draws the impostors (docs/compute-raster.md): the hardware's; a compute pass into a
+// visibility buffer (64-bit atomics), resolved in the colour pass; or each impostor by its size on
+// screen (small ones in compute). Compute needs shaderInt64 and shaderBufferInt64Atomics enabled on the
+// device and a single-sampled target (else Renderer throws Unsupported); auto falls back to hardware.
+enum class Raster { Hardware, Compute, Auto };
 // Names for reports and menus: "two-pass", "two-pass-direct", "vs", "vs-instanced", "compute",
 // "static"; "gpu", "cpu"; "gpu", "cpu", "off"; "hardware", "compute".
 const char* methodName(Method method);
 const char* animationName(Animation animation);
 const char* cullingName(Culling culling);
 const char* shadowRasterName(ShadowRaster raster);
+const char* rasterName(Raster raster);  // "hardware", "compute", "auto"
 
 // The host's colour pass.
 struct TargetFormat {
@@ -119,6 +125,7 @@ struct RendererSettings {
     bool impostorBlend = true;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
+    Raster raster = Raster::Hardware;    // the impostors' rasterizer (hardware: the frame as before it)
     bool shadows = true;
     // Casters drawn into the shadow map at a level from their size in the map (texels of pose-sphere
     // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at

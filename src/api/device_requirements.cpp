@@ -103,6 +103,9 @@ gpu::BorrowedHandles checkBorrowedDevice(const Device& device) {
                                                     " does not exist (the device has " + std::to_string(familyCount) + ")");
     gpu::BorrowedHandles handles{device.instance, device.physicalDevice, device.device, device.queueFamily,
                                  device.enabledFeatures->features.fragmentStoresAndAtomics == VK_TRUE};
+    // Optional: the compute rasterizer's 64-bit atomics (refused in one line without them).
+    handles.int64Atomics = device.enabledFeatures->features.shaderInt64 == VK_TRUE && f12 &&
+                           f12->shaderBufferInt64Atomics == VK_TRUE;
     return handles;
 }
 

@@ -11,6 +11,7 @@
 #include "api/renderer_data.h"
 #include "frame/memory_plan.h"
 #include "gpu/buffer.h"
+#include "render/raster_mode.h"
 #include "render/scene_pass.h"
 #include "skin/storage_ranges.h"
 
@@ -35,6 +36,15 @@ skin::Method internalMethod(Method method) {
 
 render::ShadowRasterPath internalShadowRaster(ShadowRaster raster) {
     return raster == ShadowRaster::Compute ? render::ShadowRasterPath::Compute : render::ShadowRasterPath::Hardware;
+}
+
+render::RasterMode internalRaster(Raster raster) {
+    switch (raster) {
+        case Raster::Hardware: return render::RasterMode::Hardware;
+        case Raster::Compute: return render::RasterMode::Compute;
+        case Raster::Auto: return render::RasterMode::Auto;
+    }
+    throw Error(ErrorCode::InvalidArgument, "unknown raster mode " + std::to_string(static_cast<int>(raster)));
 }
 
 render::CullSettings cullSettings(const RendererSettings& s) {
@@ -76,6 +86,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.shadowRaster = internalShadowRaster(s.shadowRaster);
     o.framesInFlight = s.framesInFlight;
     o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
+    o.raster = internalRaster(s.raster);
     return o;
 }
 
@@ -122,6 +133,7 @@ const char* methodName(Method method) { return skin::methodName(detail::internal
 const char* animationName(Animation animation) {
     return render::animationPathName(animation == Animation::Cpu ? render::AnimationPath::Cpu : render::AnimationPath::Gpu);
 }
+const char* rasterName(Raster raster) { return render::rasterModeName(detail::internalRaster(raster)); }
 const char* cullingName(Culling culling) { return render::cullModeName(detail::cullSettings({.culling = culling}).mode); }
 const char* shadowRasterName(ShadowRaster raster) { return raster == ShadowRaster::Compute ? "compute" : "hardware"; }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <string>
 
 #include "gpu/pipeline.h"
@@ -29,6 +30,19 @@ std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crow
     return capacity > 0 ? capacity : crowd.size();
 }
 
+render::RasterMode rasterInEffect(const gpu::VulkanContext& context, const RecorderOptions& options) {
+    if (options.raster == render::RasterMode::Hardware) return options.raster;
+    std::string missing;
+    if (!context.int64Atomics)
+        missing = "the features shaderInt64 and shaderBufferInt64Atomics, which " + context.description.name +
+                  " lacks or the device was created without";
+    else if (options.target.samples != VK_SAMPLE_COUNT_1_BIT)
+        missing = "a single-sampled target (anti-aliasing off; raster auto draws multisampled frames on the hardware)";
+    if (missing.empty()) return options.raster;
+    if (options.raster == render::RasterMode::Auto) return render::RasterMode::Hardware;
+    throw gpu::Error("raster compute needs " + missing, gpu::ErrorKind::Unsupported);
+}
+
 CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options)
     : context_(context),
       crowd_(crowd),
@@ -50,6 +64,9 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       impostorSettings_(options.impostorSettings),
       contextOwner_(options.contextOwner),
       atlas_(options.atlas),
+      raster_(rasterInEffect(context, options)),
+      rasterLimitPixels_(options.raster == render::RasterMode::Compute ? std::numeric_limits<float>::infinity()
+                                                                      : options.rasterLimitPixels),
       cull_(options.cull),
       animation_(options.animation),
       shadows_(options.shadows),
@@ -139,6 +156,12 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         gpu::passDone(passes_, cmd, "palette");
     }
     method_->recordSkinning(cmd, passes_);
+    if (impostorRaster_) {
+        // Before the impostor draws: the colour draw's count is what the rasterizer leaves to it.
+        const render::Camera camera = render::cameraOf(view);
+        impostorRaster_->record(cmd, slot, view.projection * view.view, camera.eye, view.viewport.extent, impostorBlend_);
+        gpu::passDone(passes_, cmd, "raster");
+    }
     if (impostorDraw_) impostorDraw_->recordDraws(cmd);
     if (!shadows_ && !shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
     shadowMapReady_ = shadowMapReady_ || !shadows_;
@@ -231,6 +254,8 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
                  render::CharacterDraw::Target::Colour, fadesDrawn());
     // Far characters (and those over the mesh-level cap): after the meshes, depth-tested against them.
     if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push, impostorBlend_);
+    // The compute-rasterized impostors, merged with all of the above by their depth.
+    if (impostorRaster_) impostorRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport, impostorBlend_);
     stages_[slot] = Stage::Idle;
 }
 
@@ -265,8 +290,15 @@ void CrowdRecorder::enableImpostors() {
     } else if (atlas_->models().size() != pool_.modelCount()) {
         throw gpu::Error("impostors: the atlas given was baked for other models");
     }
+    render::ImpostorSplitBuffers split;
+    if (raster_ != render::RasterMode::Hardware) {
+        impostorRaster_ = std::make_unique<render::ImpostorRaster>(context_, pool_, buffers_, lists_, *atlas_,
+                                                                   scene_.setLayout(), target_, framesInFlight_,
+                                                                   rasterLimitPixels_);
+        split = {&impostorRaster_->split(), &impostorRaster_->hardwareList()};
+    }
     impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout(),
-                                                           target_);
+                                                           target_, split);
 }
 
 void CrowdRecorder::setMethod(skin::Method method) { switchTo(method, animation_); }
@@ -317,6 +349,7 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
     if (shadowRaster_) items.push_back({"shadow map depth (compute raster)", shadowRaster_->bytes()});
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
     if (impostorDraw_) items.push_back({"impostor quad indices and draws", impostorDraw_->bytes()});
+    if (impostorRaster_) items.push_back({"visibility buffers and raster split", impostorRaster_->bytes()});
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }

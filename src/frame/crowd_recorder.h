@@ -2,10 +2,12 @@
 // The crowd's frame as record calls into command buffers somebody else owns and submits:
 //   recordSetup       uploads and the impostor bake (once, and again after setCull turns impostors on)
 //   recordCompute     outside any rendering pass: CPU animation upload or GPU motion -> cull and LOD
-//                     -> GPU palettes -> skinning (the method) -> impostor lists -> shadow map clear
+//                     -> GPU palettes -> skinning (the method) -> compute raster of impostors (--raster
+//                     compute|auto) -> impostor lists -> shadow map clear
 //   recordShadows     the shadow casters into the renderer's own shadow map (a depth pass of its own)
 //   recordGround      inside the host's colour pass: the checkered ground (optional)
-//   recordCharacters  inside the host's colour pass: the characters, then the impostors
+//   recordCharacters  inside the host's colour pass: the characters, then the impostors (hardware-drawn,
+//                     then the visibility buffer's resolve)
 // Nothing here submits, waits or signals. A frame slot's resources (bone staging, readback of the
 // level counts, uniforms) are reused when the slot comes round again: the host must have waited for
 // that slot's previous frame first. The crowd is planned by its owner (crowd::Crowd::advanceTo).
@@ -31,6 +33,8 @@
 #include "render/geometry_pool.h"
 #include "render/impostor_atlas.h"
 #include "render/impostor_draw.h"
+#include "render/impostor_raster.h"
+#include "render/raster_mode.h"
 #include "render/scene_pass.h"
 #include "render/shadow_map.h"
 #include "render/shadow_raster.h"
@@ -62,6 +66,11 @@ struct RecorderOptions {
     // demotes the characters beyond it to impostors. 0, or a crowd no larger: no cap.
     std::uint32_t meshCapacity = 0;
     render::ImpostorSettings impostorSettings;
+    // Which rasterizer draws the impostors (docs/compute-raster.md). Compute is refused without 64-bit
+    // buffer atomics or with a multisampled target; auto then falls back to the hardware.
+    render::RasterMode raster = render::RasterMode::Hardware;
+    // Under auto, the largest impostor (screen rectangle's longer side, pixels) drawn in compute.
+    float rasterLimitPixels = render::kAutoRasterLimitPixels;
     // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
     std::shared_ptr<const render::ImpostorAtlas> atlas;
     // Kept alive by what may outlive the recorder (its atlas, shared with other recorders): the
@@ -75,6 +84,11 @@ std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::
 // The most characters a frame lists at a mesh level (DrawLists::drawCapacity): the mesh slots, and
 // the bone blocks when they belong to slots.
 std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crowd);
+
+// The rasterizer the impostors get: options.raster where the device and target allow it (64-bit buffer
+// atomics, single-sampled), hardware for auto where they do not; compute where they do not throws
+// gpu::Error (Unsupported) saying why in one line.
+render::RasterMode rasterInEffect(const gpu::VulkanContext& context, const RecorderOptions& options);
 
 // Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):
 // draw with the method's vertices and the geometry pool's indices from the indirect commands.
@@ -133,6 +147,9 @@ public:
     std::uint32_t framesInFlight() const { return framesInFlight_; }
     // The levels drawn in the slot's last frame: read once the host has waited for it.
     render::LodCounts countsOf(std::uint32_t slot) const { return lists_.countsOf(slot); }
+    // The rasterizer the impostors get (options.raster, or hardware where auto lacked what it needs).
+    render::RasterMode raster() const { return raster_; }
+    const render::ImpostorRaster* impostorRaster() const { return impostorRaster_.get(); }
     skin::SkinningMethod& method() { return *method_; }
     const skin::SkinningMethod& method() const { return *method_; }
     const render::GeometryPool& pool() const { return pool_; }
@@ -189,7 +206,10 @@ private:
     render::ImpostorSettings impostorSettings_;
     std::shared_ptr<const void> contextOwner_;
     std::shared_ptr<const render::ImpostorAtlas> atlas_;
+    std::unique_ptr<render::ImpostorRaster> impostorRaster_;  // before impostorDraw_: it reads the split
     std::unique_ptr<render::ImpostorDraw> impostorDraw_;
+    render::RasterMode raster_;  // in effect (auto without what it needs: hardware)
+    float rasterLimitPixels_;
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;

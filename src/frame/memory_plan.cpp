@@ -78,6 +78,10 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
         plan.items.push_back({"impostor quad indices and draws",
                               std::uint64_t{IMPOSTOR_QUADS_PER_DRAW} * 6 * sizeof(std::uint32_t) +
                                   sizeof(gpu::ImpostorDrawsHeader) + draws * sizeof(gpu::DrawIndexedCommand)});
+        // The compute rasterizer's list for the hardware path; its visibility buffers (8 bytes a pixel
+        // and frame in flight) follow the viewport, which is not known here.
+        if (options.raster != render::RasterMode::Hardware)
+            plan.items.push_back({"visibility buffers and raster split", sizeof(gpu::ImpostorSplit) + n * 8});
     }
     plan.items.push_back({"skinning method (" + std::string(skin::methodName(options.method)) + ")",
                           methodBytes(context, crowd, options)});

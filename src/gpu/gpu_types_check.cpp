@@ -30,6 +30,9 @@ static_assert(sizeof(ImpostorFrame) == 16 && offsetof(ImpostorFrame, demoted) ==
 static_assert(sizeof(MeshCut) == 32 && offsetof(MeshCut, splitDispatch) == 16);
 static_assert(MESH_CUT_COARSE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0 && MESH_CUT_FINE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0);
 static_assert(sizeof(ImpostorDrawsHeader) == 16);
+static_assert(sizeof(ImpostorRasterPush) == 112 && offsetof(ImpostorRasterPush, viewport) == 80 &&
+              offsetof(ImpostorRasterPush, limits) == 96);
+static_assert(sizeof(ImpostorSplit) == 32 && offsetof(ImpostorSplit, largeDispatch) == 16);
 static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + 6 * 16 + 3 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160 &&
               offsetof(CullUniforms, lightPlanes) == 176 && offsetof(CullUniforms, shadow) == 272 &&

@@ -28,6 +28,7 @@ VulkanContext::VulkanContext(const BorrowedHandles& borrowed)
       queue(borrowed.queue),
       queueFamily(borrowed.queueFamily),
       fragmentStores(borrowed.fragmentStoresAndAtomics),
+      int64Atomics(borrowed.int64Atomics),
       debugNames_(borrowed.debugNames) {
     vkGetPhysicalDeviceProperties(physicalDevice, &properties);
     vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memoryProperties);

@@ -30,6 +30,9 @@ struct BorrowedHandles {
     bool fragmentStoresAndAtomics = false;  // whether the host enabled it (two-pass-direct needs it)
     VkQueue queue = VK_NULL_HANDLE;
     bool debugNames = false;  // the instance has VK_EXT_debug_utils: name objects for validation messages
+    // shaderInt64 and shaderBufferInt64Atomics, whether the host enabled both (the compute rasterizer's
+    // visibility buffer needs them).
+    bool int64Atomics = false;
 };
 
 class VulkanContext {
@@ -50,6 +53,7 @@ public:
     DeviceDescription description{};
     bool multiDrawIndirect = true;
     bool fragmentStores = false;
+    bool int64Atomics = false;  // BorrowedHandles::int64Atomics
 
     // Device-local memory heap size in bytes (the largest such heap).
     std::uint64_t deviceLocalBytes() const;

@@ -28,7 +28,7 @@ struct DrawsPush {
 
 ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                            const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
-                           const TargetFormat& target)
+                           const TargetFormat& target, ImpostorSplitBuffers split)
     : context_(context), lists_(lists), atlas_(atlas) {
     try {
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -46,7 +46,10 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
                                    sizeof(gpu::ImpostorDrawsHeader) + 2 * maxDraws_ * sizeof(gpu::DrawIndexedCommand),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                    gpu::MemoryUse::DeviceLocal, "impostor draws");
-        const gpu::BufferBinding drawBindings[] = {{storage, lists.impostorFrame().buffer}, {storage, draws_.buffer}};
+        // Binding 2, the colour pass's count: ImpostorFrame::count or ImpostorSplit::hardwareCount (both first).
+        const gpu::BufferBinding drawBindings[] = {{storage, lists.impostorFrame().buffer},
+                                                   {storage, draws_.buffer},
+                                                   {storage, split.count ? split.count->buffer : lists.impostorFrame().buffer}};
         drawsSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, drawBindings);
         const VkDescriptorSetLayout drawsSetLayout = drawsSet_->layout();
         const VkPushConstantRange drawsPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(DrawsPush)};
@@ -58,6 +61,11 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
                                                {storage, lists.impostorList().buffer},
                                                {storage, lists.shadowStates().buffer}};
         set_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, bindings);
+        if (split.list) {
+            const gpu::BufferBinding colour[] = {bindings[0], bindings[1], bindings[2], {storage, split.list->buffer},
+                                                 bindings[4]};
+            colourSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_VERTEX_BIT, colour);
+        }
         const VkDescriptorSetLayout sets[3] = {sceneSetLayout, set_->layout(), atlas.setLayout()};
         const VkPushConstantRange push{kStages, 0, sizeof(ScenePush)};
         layout_ = gpu::createPipelineLayout(context, sets, {&push, 1});
@@ -111,6 +119,7 @@ void ImpostorDraw::release() {
     if (drawsLayout_) vkDestroyPipelineLayout(context_.device, drawsLayout_, nullptr);
     drawsPipeline_ = VK_NULL_HANDLE, drawsLayout_ = VK_NULL_HANDLE;
     set_.reset();
+    colourSet_.reset();
     drawsSet_.reset();
     gpu::destroyBuffer(context_, draws_);
     gpu::destroyBuffer(context_, quad_);
@@ -146,7 +155,7 @@ void ImpostorDraw::recordShadows(VkCommandBuffer cmd, VkDescriptorSet lightSet, 
 
 void ImpostorDraw::record(VkCommandBuffer cmd, VkDescriptorSet sceneSet, const ScenePush& push, bool blend) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_[blend ? 1 : 0]);
-    const VkDescriptorSet sets[3] = {sceneSet, set_->set(), atlas_.set()};
+    const VkDescriptorSet sets[3] = {sceneSet, (colourSet_ ? colourSet_ : set_)->set(), atlas_.set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 3, sets, 0, nullptr);
     vkCmdPushConstants(cmd, layout_, kStages, 0, sizeof push, &push);
     // Six vertices per impostor in one draw, no index buffer. The Count form with a count of 1 rather

@@ -23,11 +23,19 @@ namespace gpu { class VulkanContext; }
 
 namespace render {
 
+// With the compute rasterizer (render/impostor_raster.h), the colour pass draws only the impostors it
+// left to the hardware: their count (ImpostorSplit) and list. Null: every impostor in view, as without
+// it. The shadow pass always draws every casting impostor.
+struct ImpostorSplitBuffers {
+    const gpu::Buffer* count = nullptr;
+    const gpu::Buffer* list = nullptr;
+};
+
 class ImpostorDraw {
 public:
     ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                  const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
-                 const TargetFormat& target);
+                 const TargetFormat& target, ImpostorSplitBuffers split = {});
     ~ImpostorDraw();
     ImpostorDraw(const ImpostorDraw&) = delete;
     ImpostorDraw& operator=(const ImpostorDraw&) = delete;
@@ -52,7 +60,7 @@ private:
     gpu::Buffer draws_;  // ImpostorDrawsHeader, then up to maxDraws_ indexed draws for each pass
     std::uint32_t maxDraws_ = 1;
     std::uint32_t characters_ = 0;
-    std::unique_ptr<gpu::DescriptorBundle> set_, drawsSet_;
+    std::unique_ptr<gpu::DescriptorBundle> set_, colourSet_, drawsSet_;  // colourSet_: the split's list
     VkPipelineLayout drawsLayout_ = VK_NULL_HANDLE;
     VkPipeline drawsPipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;

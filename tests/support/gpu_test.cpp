@@ -35,7 +35,7 @@ void GpuTest::SetUp() {
     vkGetPhysicalDeviceFeatures(this->device->physicalDevice, &features);
     context = std::make_unique<gpu::VulkanContext>(gpu::BorrowedHandles{
         this->device->instance, this->device->physicalDevice, this->device->device, this->device->queueFamily,
-        features.fragmentStoresAndAtomics == VK_TRUE, this->device->queue, true});
+        features.fragmentStoresAndAtomics == VK_TRUE, this->device->queue, true, this->device->int64Atomics()});
     hosts()[context.get()] = this->device.get();
 }
 
@@ -80,6 +80,9 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.lodFade = options.cull.lodFade;
     settings.impostorBlend = options.impostorBlend;
     settings.shadowMapSize = options.shadowMapSize;
+    settings.raster = options.raster == render::RasterMode::Compute ? crowdgpu::Raster::Compute
+                      : options.raster == render::RasterMode::Auto  ? crowdgpu::Raster::Auto
+                                                                    : crowdgpu::Raster::Hardware;
     return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
 }
 

@@ -95,7 +95,8 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
             "gpu_upload_ms,gpu_motion_ms,gpu_cull_ms,gpu_palette_ms,gpu_skin_ms,gpu_copy_ms,gpu_shadow_ms,gpu_draw_ms,"
             "gpu_total_ms,pass_clock,skin_vertices_per_s,"
             "cpu_animate_ms,cpu_record_ms,memory_bytes,frames,warmup,width,height,device,driver,commit,date,"
-            "scene,culling,visible_lod0,visible_lod1,visible_lod2,triangles_drawn,animation,shadow_triangles,shadow_impostors,aa\n";
+            "scene,culling,visible_lod0,visible_lod1,visible_lod2,triangles_drawn,animation,shadow_triangles,shadow_impostors,aa,"
+            "impostors,gpu_raster_ms,raster\n";
     for (const BenchResult& r : results) {
         file << r.model << ',' << r.method << ',' << r.count << ',' << r.vertices << ',' << r.triangles << ','
              << (r.ok ? "ok" : "skipped") << ',' << r.frame.medianFrameMs << ',' << r.frame.p95FrameMs << ','
@@ -107,7 +108,8 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
              << "\",\"" << meta.driver << "\"," << meta.commit << ',' << meta.date << ',' << r.frame.scene << ",\""
              << r.frame.culling << "\"," << r.frame.medianVisible[0] << ',' << r.frame.medianVisible[1] << ','
              << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << ",\"" << r.frame.animation << "\","
-             << r.frame.medianShadowTriangles << ',' << r.frame.medianShadowImpostors << ',' << r.frame.antiAliasing << '\n';
+             << r.frame.medianShadowTriangles << ',' << r.frame.medianShadowImpostors << ',' << r.frame.antiAliasing << ','
+             << r.frame.medianImpostors << ',' << passMs(r, "raster") << ',' << r.frame.raster << '\n';
     }
     io::writeFile(path, file.str());
 }
@@ -154,6 +156,8 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["scene"] = r.frame.scene;
         row["culling"] = r.frame.culling;
         row["aa"] = r.frame.antiAliasing;
+        row["raster"] = r.frame.raster;
+        row["gpu_raster_ms"] = passMs(r, "raster");
         row["animation"] = r.frame.animation;
         row["median_visible_per_lod"] = {r.frame.medianVisible[0], r.frame.medianVisible[1], r.frame.medianVisible[2]};
         row["median_triangles"] = r.frame.medianTriangles;

@@ -44,6 +44,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     summary.animation = std::string(crowdgpu::behaviourName(scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.scene.animation) + " animation";
     summary.antiAliasing = antiAliasingName(options.scene.samples);
+    summary.raster = crowdgpu::rasterName(options.scene.cull.raster);
     summary.model = modelNames(models);
     summary.method = crowdgpu::methodName(options.method);
     summary.characters = options.count;

@@ -154,12 +154,19 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.shadowRaster = cull.shadowRaster;
     settings.lodFade = cull.lodFade;
     settings.impostorBlend = cull.impostorBlend;
+    settings.raster = cull.raster;
     return settings;
 }
 
 std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd& crowd,
                                  const crowdgpu::RendererSettings& settings, VkExtent2D size) {
-    return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + renderTargetBytes(size, settings.target.samples);
+    // The compute rasterizer's visibility buffers follow the target (8 bytes a pixel, one a frame in flight),
+    // which the library's plan does not know.
+    const std::uint64_t visibility = settings.impostors && settings.raster != crowdgpu::Raster::Hardware
+                                         ? std::uint64_t{size.width} * size.height * 8 * settings.framesInFlight
+                                         : 0u;
+    return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + renderTargetBytes(size, settings.target.samples) +
+           visibility;
 }
 
 void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, const crowdgpu::RendererSettings& settings,

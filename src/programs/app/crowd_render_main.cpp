@@ -128,6 +128,7 @@ int run(const app::RenderOptions& options) {
     summary.animation = std::string(crowdgpu::behaviourName(options.scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.animation) + " animation";
     summary.antiAliasing = app::antiAliasingName(options.samples);
+    summary.raster = crowdgpu::rasterName(options.cull.raster);
     summary.model = app::modelNames(models);
     summary.method = crowdgpu::methodName(options.method);
     summary.characters = crowd.size();

@@ -208,7 +208,8 @@ void HostDevice::createDevice(const HostDeviceOptions& options) {
     if (family->timestampValidBits > 0) timestampPeriodNs_ = properties.limits.timestampPeriod;
 
     // The library says what it needs and checks it; the device enables exactly that, plus
-    // fragmentStoresAndAtomics where the device has it (the two-pass-direct method).
+    // fragmentStoresAndAtomics where the device has it (the two-pass-direct method), and 64-bit
+    // integers with their buffer atomics where it has both (the compute rasterizer, --raster).
     if (const std::string missing = crowdgpu::checkPhysicalDevice(physicalDevice); !missing.empty())
         throw Error(missing);
     VkPhysicalDeviceFeatures supported;
@@ -218,6 +219,11 @@ void HostDevice::createDevice(const HostDeviceOptions& options) {
     enabled_.features.pNext = &enabled_.vulkan13;
     crowdgpu::enableRequiredFeatures(enabled_.features, enabled_.vulkan11, enabled_.vulkan12, enabled_.vulkan13);
     enabled_.features.features.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 supported2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
+    vkGetPhysicalDeviceFeatures2(physicalDevice, &supported2);
+    if (supported.shaderInt64 && supported12.shaderBufferInt64Atomics)
+        enabled_.features.features.shaderInt64 = enabled_.vulkan12.shaderBufferInt64Atomics = VK_TRUE;
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

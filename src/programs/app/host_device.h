@@ -67,6 +67,11 @@ public:
     // Records `record` into a fresh command buffer, submits it and waits for it (setup and readback).
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
 
+    // Whether the device was created with shaderInt64 and shaderBufferInt64Atomics (the compute rasterizer).
+    bool int64Atomics() const {
+        return enabled_.features.features.shaderInt64 == VK_TRUE && enabled_.vulkan12.shaderBufferInt64Atomics == VK_TRUE;
+    }
+
 private:
     void createInstance(const HostDeviceOptions& options);
     void pickPhysicalDevice(const std::string& selector);

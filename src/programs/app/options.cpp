@@ -49,6 +49,10 @@ usage: crowd-render [options]
   --aa off|msaa2|msaa4|msaa8
                           anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
                           and ground, averaged into the picture (default %AA%)
+  --raster hardware|compute|auto
+                          which rasterizer draws the impostors: the hardware's, a compute pass into a
+                          visibility buffer, or by size on screen (compute up to 32 px); compute needs
+                          64-bit atomics and --aa off, auto falls back to hardware (default hardware)
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)
@@ -128,6 +132,12 @@ std::string formatPixels(float pixels) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", pixels);
     return text;
+}
+
+crowdgpu::Raster parseRaster(const std::string& flag, const std::string& text) {
+    for (const crowdgpu::Raster raster : {crowdgpu::Raster::Hardware, crowdgpu::Raster::Compute, crowdgpu::Raster::Auto})
+        if (text == crowdgpu::rasterName(raster)) return raster;
+    throw app::Error(flag + ": '" + text + "' is not hardware, compute or auto");
 }
 
 bool parseOnOff(const std::string& flag, const std::string& text) {
@@ -212,6 +222,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--lod-fade") options.cull.lodFade = parseOnOff(flag, next());
         else if (flag == "--impostor-blend") options.cull.impostorBlend = parseOnOff(flag, next());
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
+        else if (flag == "--raster") options.cull.raster = parseRaster(flag, next());
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
             options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);

@@ -33,6 +33,8 @@ struct CullOptions {
     crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Compute;  // how the map's mesh casters are drawn
     bool lodFade = true;        // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
     bool impostorBlend = true;  // impostors blend four atlas cells, or show the nearest (crowdgpu::RendererSettings)
+    // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
+    crowdgpu::Raster raster = crowdgpu::Raster::Hardware;
 };
 
 // What a crowd is: models, size, clip, seed.

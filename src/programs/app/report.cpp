@@ -96,9 +96,9 @@ std::vector<app::FrameStats> RecentFrames::frames() const {
 
 std::string impostorSummary(const RenderOptions& options) {
     if (!options.cull.impostors) return ", impostors off";
-    char text[96];
-    std::snprintf(text, sizeof text, ", impostors below %g px (mesh capacity %u)", options.cull.impostorThreshold,
-                  options.meshCapacity);
+    char text[128];
+    std::snprintf(text, sizeof text, ", impostors below %g px (mesh capacity %u, raster %s)",
+                  options.cull.impostorThreshold, options.meshCapacity, crowdgpu::rasterName(options.cull.raster));
     return text;
 }
 
@@ -134,6 +134,7 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["culling"] = s.culling;
     json["animation"] = s.animation;
     json["aa"] = s.antiAliasing;
+    json["raster"] = s.raster;
     json["median_visible_per_lod"] = {s.medianVisible[0], s.medianVisible[1], s.medianVisible[2]};
     json["median_triangles"] = s.medianTriangles;
     json["median_impostors"] = s.medianImpostors;

@@ -19,6 +19,7 @@ struct RunSummary {
     std::string culling;  // "gpu", "cpu", "off", with "LOD on/off"
     std::string animation = "in-place, gpu animation";  // behaviour and animation path
     std::string antiAliasing = "off";  // --aa
+    std::string raster = "hardware";   // --raster
     std::uint32_t characters = 0;
     // Medians over the measured frames: visible characters per level of detail, triangles drawn.
     double medianVisible[app::kLodCount] = {};

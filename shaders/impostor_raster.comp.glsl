@@ -1,0 +1,128 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+// The compute rasterizer of impostors (docs/compute-raster.md). First dispatch: each thread takes
+// impostors of the frame's list in turn and finds its quad's screen rectangle. An impostor larger on
+// screen than the push constants allow, or crossing the eye's plane, is listed for the hardware path
+// (ImpostorSplit); one larger than a thread should walk alone is listed for the second dispatch
+// (LARGE_PASS, indirect: a workgroup an impostor, its threads striding over the rectangle); the rest
+// the thread draws itself. Drawing a pixel: a pixel centre on the quad is tested against the atlas's
+// blended coverage as the hardware path's fragment shader does (cut under half) and depth | list index
+// is kept with a 64-bit atomic min in the visibility buffer; impostor_resolve.frag.glsl shades the winners.
+#include "gpu_types.h"
+#include "impostor_pose.glsl.inc"
+#include "impostor_cell.glsl.inc"
+#include "impostor_quad.glsl.inc"
+#include "impostor_raster_pixel.glsl.inc"
+#include "impostor_sample.glsl.inc"
+#include "fade_dither.glsl.inc"
+
+layout(local_size_x = IMPOSTOR_RASTER_WORKGROUP) in;
+layout(constant_id = 0) const bool LARGE_PASS = false;
+
+layout(push_constant) uniform Push { ImpostorRasterPush raster; };
+layout(std430, set = 0, binding = 0) readonly buffer ImpostorModels { ImpostorModel impostorModels[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Characters { CharacterRecord characters[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Impostors { uint impostors[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Frame { ImpostorFrame impostorFrame; };
+layout(std430, set = 0, binding = 4) buffer Visibility { uint64_t visibility[]; };
+layout(std430, set = 0, binding = 5) buffer Split { ImpostorSplit split; };
+layout(std430, set = 0, binding = 6) writeonly buffer HardwareImpostors { uint hardwareImpostors[]; };
+layout(std430, set = 0, binding = 7) buffer LargeImpostors { uint largeImpostors[]; };
+// Every character's state word (gpu_types.h: its fade share, FADE_SHIFT), written by culling.
+layout(std430, set = 0, binding = 8) readonly buffer CharacterStates { uint characterStates[]; };
+layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
+
+// Impostors this workgroup rasterized: summed in shared memory and added to the split once per
+// workgroup, since millions of atomics on one word would serialize (a few ms for 10,000,000 on one
+// address); the rare hardware-bound and large impostors take global atomics directly.
+shared uint rasterized;
+
+struct Footprint {
+    ImpostorQuad quad;
+    ImpostorQuadClip clip;
+    ivec2 first, last;  // pixels whose centre lies in the screen rectangle, inside the viewport
+    float side;         // the rectangle's longer side, pixels
+    bool visible;       // no corner at or behind the eye's plane (the hardware path clips such a quad)
+};
+
+Footprint footprint(uint index) {
+    const vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
+    Footprint f;
+    CharacterRecord record = characters[impostors[index]];
+    f.quad = impostorQuad(record, impostorModels[record.ids.x], raster.cameraPosition.xyz, false, vec3(0.0));
+    if (raster.limits.w == 0u) f.quad.blend = impostorNearest(f.quad.blend);
+    f.clip = impostorQuadClip(f.quad, raster.viewProjection);
+    vec2 low = vec2(3.0e38), high = vec2(-3.0e38);
+    f.visible = true;
+    for (int i = 0; i < 4; ++i) {
+        vec4 clip = impostorClipAt(f.clip, corners[i]);
+        f.visible = f.visible && clip.w > 0.0;
+        vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * raster.viewport.xy;
+        low = min(low, pixel);
+        high = max(high, pixel);
+    }
+    f.side = max(high.x - low.x, high.y - low.y);
+    f.first = max(ivec2(ceil(low - 0.5)), ivec2(0));
+    f.last = min(ivec2(floor(high - 0.5)), ivec2(raster.viewport.xy) - 1);
+    return f;
+}
+
+// Pixels start, start + stride, ... of the footprint's rectangle (row by row).
+void drawPixels(uint index, Footprint f, uint start, uint stride) {
+    if (any(greaterThan(f.first, f.last))) return;
+    uint width = uint(f.last.x - f.first.x + 1), count = width * uint(f.last.y - f.first.y + 1);
+    uint rowPitch = uint(raster.viewport.x);
+    // Fading from its last mesh level: only the impostor's share of the dither (the hardware path's
+    // fragment shader drops the same pixels; the mask is the viewport's, a multiple of 4 pixels from the
+    // target's origin in the programs).
+    float fadeShare = fadeShareOf(characterStates[impostors[index]]);
+    bool blend = raster.limits.w != 0u;
+    for (uint p = start; p < count; p += stride) {
+        ivec2 at = f.first + ivec2(p % width, p / width);
+        if (fadeShare > 0.0 && !fadeDraws(vec2(at) + 0.5, fadeShare, true)) continue;
+        ImpostorPixel pixel = impostorPixel(f.clip, vec2(at), raster.viewport.xy);
+        if (!pixel.inside) continue;
+        impostorUseGradients(pixel, f.quad.grid);
+        if (impostorTexel(atlasAlbedo, blend, f.quad.blend.cells, f.quad.blend.weights, f.quad.grid, pixel.local).a < 0.5)
+            continue;
+        uint64_t word = (uint64_t(floatBitsToUint(pixel.depth)) << 32) | uint64_t(index);
+        atomicMin(visibility[uint(at.y) * rowPitch + uint(at.x)], word);
+    }
+}
+
+// Returns whether the impostor is rasterized in compute (here or in the second dispatch).
+bool take(uint index) {
+    Footprint f = footprint(index);
+    if (!f.visible || f.side > raster.viewport.z) {
+        hardwareImpostors[atomicAdd(split.hardwareCount, 1u)] = impostors[index];
+        return false;
+    }
+    if (f.side > raster.viewport.w) {
+        uint slot = atomicAdd(split.largeCount, 1u);
+        if (slot < raster.limits.z) {
+            largeImpostors[slot] = index;
+            atomicMax(split.largeDispatch.x, slot + 1u);
+            return true;
+        }
+    }
+    drawPixels(index, f, 0u, 1u);
+    return true;
+}
+
+void main() {
+    if (LARGE_PASS) {
+        uint index = largeImpostors[gl_WorkGroupID.x];
+        drawPixels(index, footprint(index), gl_LocalInvocationIndex, IMPOSTOR_RASTER_WORKGROUP);
+        return;
+    }
+    if (gl_LocalInvocationIndex == 0u) rasterized = 0u;
+    barrier();
+    uint count = min(impostorFrame.count, raster.limits.x);
+    uint mine = 0u;
+    for (uint index = gl_GlobalInvocationID.x; index < count; index += raster.limits.y) mine += take(index) ? 1u : 0u;
+    if (mine > 0u) atomicAdd(rasterized, mine);
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && rasterized > 0u) atomicAdd(split.computeCount, rasterized);
+}

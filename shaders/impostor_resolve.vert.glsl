@@ -1,0 +1,7 @@
+#version 460
+// The visibility buffer's resolve: one triangle over the viewport (the scissor trims it); the fragment
+// shader writes the depth.
+void main() {
+    vec2 corner = vec2((gl_VertexIndex << 1) & 2, gl_VertexIndex & 2);
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}

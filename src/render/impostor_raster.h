@@ -1,0 +1,87 @@
+#pragma once
+// The compute rasterizer of impostors (docs/compute-raster.md). After culling, one compute pass
+// rasterizes the frame's impostors into a visibility buffer (a 64-bit word per pixel: depth bits above,
+// the impostor's place in the list below, kept by atomic min), except those larger on screen than
+// its limit or crossing the near plane, which it lists for the hardware path (the impostor draw reads
+// that list, ImpostorDraw's `split`); those too large for one thread to walk get a workgroup each in a
+// second, indirect dispatch. Inside the colour pass a full-screen resolve shades the covered
+// pixels with the hardware path's shading and writes their depth, so the depth test merges them with
+// the hardware-drawn meshes and impostors. Shadows stay on the hardware path.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include <glm/glm.hpp>
+
+#include "gpu/buffer.h"
+#include "gpu/descriptor_bundle.h"
+#include "render/crowd_buffers.h"
+#include "render/draw_lists.h"
+#include "render/geometry_pool.h"
+#include "render/impostor_atlas.h"
+#include "render/target_format.h"
+
+namespace gpu { class VulkanContext; }
+
+namespace render {
+
+class ImpostorRaster {
+public:
+    // `limitPixels`: the longest side of an impostor's screen rectangle the compute path draws
+    // (infinity: every impostor not crossing the near plane). The target must be single-sampled.
+    ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
+                   const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
+                   const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels);
+    ~ImpostorRaster();
+    ImpostorRaster(const ImpostorRaster&) = delete;
+    ImpostorRaster& operator=(const ImpostorRaster&) = delete;
+
+    // Outside any render pass, after culling and before ImpostorDraw::recordDraws: clears the slot's
+    // visibility buffer (made to the viewport's extent, grown when it grows: the host has waited for
+    // the slot's previous frame) and rasterizes.
+    // `blend`: the four atlas cells' blend, or the nearest cell (impostor-blend), as the colour draw.
+    void record(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& viewProjection, const glm::vec3& eye,
+                VkExtent2D extent, bool blend);
+    // Inside the colour pass, after the hardware draws, its viewport set to `viewport` (the extent record had).
+    void recordResolve(VkCommandBuffer cmd, std::uint32_t slot, VkDescriptorSet sceneSet, const glm::vec3& eye,
+                       const VkRect2D& viewport, bool blend) const;
+
+    // ImpostorSplit, then the list of characters left to the hardware path (the colour draw's).
+    const gpu::Buffer& split() const { return split_; }
+    const gpu::Buffer& hardwareList() const { return hardwareList_; }
+    // The slot's visibility buffer (tests) and its extent.
+    const gpu::Buffer& visibility(std::uint32_t slot) const { return slots_[slot].visibility; }
+    VkExtent2D visibilityExtent(std::uint32_t slot) const { return slots_[slot].extent; }
+    std::uint64_t bytes() const;
+
+private:
+    struct Slot {
+        gpu::Buffer visibility;
+        VkExtent2D extent{0, 0};
+        std::unique_ptr<gpu::DescriptorBundle> rasterSet, resolveSet;
+    };
+    void makeVisibility(std::uint32_t slot, VkExtent2D extent);
+    void release();
+
+    const gpu::VulkanContext& context_;
+    const CrowdBuffers& crowd_;
+    const DrawLists& lists_;
+    const ImpostorAtlas& atlas_;
+    float limitPixels_;
+    gpu::Buffer split_, hardwareList_;
+    gpu::Buffer largeList_;  // the second dispatch's impostors (places in the impostor list)
+    std::vector<Slot> slots_;
+    std::unique_ptr<gpu::DescriptorBundle> drawSet_;  // what the resolve reads besides the visibility
+    // Sets of the slots' layouts, kept for the pipeline layouts: a slot's sets are made again (identical
+    // layouts) when its visibility buffer grows.
+    std::unique_ptr<gpu::DescriptorBundle> rasterPrototype_, resolvePrototype_;
+    VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
+    VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
+    VkPipeline largePipeline_ = VK_NULL_HANDLE;  // the same shader's second dispatch (LARGE_PASS)
+    VkPipelineLayout resolveLayout_ = VK_NULL_HANDLE;
+    VkPipeline resolvePipeline_ = VK_NULL_HANDLE;
+};
+
+}  // namespace render
