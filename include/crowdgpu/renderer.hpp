@@ -125,7 +125,8 @@ struct RendererSettings {
     bool impostorBlend = true;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
-    Raster raster = Raster::Hardware;    // the impostors' rasterizer (hardware: the frame as before it)
+    Raster raster = Raster::Auto;  // the impostors' rasterizer (hardware: the frame as before it; auto falls back
+                                   // to hardware without 64-bit atomics or with multisampling)
     bool shadows = true;
     // Casters drawn into the shadow map at a level from their size in the map (texels of pose-sphere
     // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at

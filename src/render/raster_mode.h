@@ -14,10 +14,10 @@ const char* rasterModeName(RasterMode mode);
 std::optional<RasterMode> parseRasterMode(std::string_view name);
 
 // Under auto, the longest side (pixels) of an impostor's screen rectangle that the compute rasterizer
-// still draws; larger ones go to the hardware path. The default impostor threshold, so every impostor of
-// its ordinary size goes to compute and only those the mesh cap demoted while large, or seen very near,
-// stay on the hardware; to be set from the H100's crossover (docs/compute-raster.md, "Choosing auto's
-// limit"; bench/run_compute_raster.sh).
-inline constexpr float kAutoRasterLimitPixels = 32.0f;
+// still draws; larger ones go to the hardware path. Set from the H100's sweep (docs/compute-raster.md,
+// "Choosing auto's limit"; bench/results/h100-2026-11-24-compute-raster): compute was faster per impostor
+// at every size measured, from 3 px (3.1x) to 187 px a side (1.2x), so no crossover was found; 128 px
+// keeps to the measured range with a margin (0.6x of the hardware's time at 96 px).
+inline constexpr float kAutoRasterLimitPixels = 128.0f;
 
 }  // namespace render

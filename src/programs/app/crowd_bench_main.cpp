@@ -46,7 +46,7 @@ usage: crowd-bench [options]
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
-  --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default hardware)
+  --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default auto)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
   --impostors on|off   the impostor level for far characters (default off); with

@@ -51,8 +51,8 @@ usage: crowd-render [options]
                           and ground, averaged into the picture (default %AA%)
   --raster hardware|compute|auto
                           which rasterizer draws the impostors: the hardware's, a compute pass into a
-                          visibility buffer, or by size on screen (compute up to 32 px); compute needs
-                          64-bit atomics and --aa off, auto falls back to hardware (default hardware)
+                          visibility buffer, or by size on screen (compute up to 128 px); compute needs
+                          64-bit atomics and --aa off, auto falls back to hardware (default auto)
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)

@@ -34,7 +34,7 @@ struct CullOptions {
     bool lodFade = true;        // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
     bool impostorBlend = true;  // impostors blend four atlas cells, or show the nearest (crowdgpu::RendererSettings)
     // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
-    crowdgpu::Raster raster = crowdgpu::Raster::Hardware;
+    crowdgpu::Raster raster = crowdgpu::Raster::Auto;
 };
 
 // What a crowd is: models, size, clip, seed.
