@@ -59,13 +59,6 @@ void main() {
                                               : frames[b].vertexBase + k * bucket.mesh.z;
         draws[i] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(vertexOffset), c);
         if (slotBoneRows != 0u) characters[c].ids.y = i * slotBoneRows;
-        // A fading character's colour draw is also listed apart (after the fade partners'), for the
-        // pipeline that dithers: the colour pass draws everyone else with the one that does not discard
-        // (and so keeps the early depth test), skipping the fading in its vertex shader. draws[i] stays
-        // whole for a host's own passes (FrameOutput).
-        if (inView != 0u && (shadow >> FADE_SHIFT) != 0u)
-            draws[fadeDrawBase + shadowDrawBase + atomicAdd(totals.fading.x, 1u)] =
-                DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(vertexOffset), c);
         if (inView != 0u && (shadow >> FADE_SHIFT) != 0u && bucket.list.y + 1u < LOD_COUNT) {
             BucketRecord coarser = buckets[b + 1u];
             draws[fadeDrawBase + atomicAdd(totals.fadeDrawCount, 1u)] =

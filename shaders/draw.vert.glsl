@@ -11,17 +11,10 @@
 #include "draw_varyings.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
-// The colour pass's undithered pipeline: a fading character is drawn by the dithering one from its own
-// list (cull_emit.comp.glsl), so here its triangles collapse to a point outside the view.
-layout(constant_id = 0) const bool kSkipFading = false;
 layout(location = 0) in vec4 inPosition;
 layout(location = 1) in vec4 inNormal;
 
 void main() {
-    if (kSkipFading && (characterStates[gl_InstanceIndex] >> FADE_SHIFT) != 0u) {
-        gl_Position = vec4(0.0, 0.0, -1.0, 1.0);  // in front of the near plane: clipped
-        return;
-    }
     CharacterRecord character = characters[gl_InstanceIndex];
     ModelRecord model = models[character.ids.x];
     uint material = uint(inNormal.w);

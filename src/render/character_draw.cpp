@@ -84,10 +84,9 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     colour.depthFormat = target.depth;
     colour.samples = target.samples;
     colour.layout = layout_;
-    createPipelines(colour, colour_, true);
-    // Fades (from skinned vertices only): a fading character's own draw keeps the finer share of its
-    // pixels, its fade partner's draw the coarser share (draw.frag.glsl, kFadeSide). Only they discard:
-    // the colour pipeline above skips the fading characters and keeps the early depth test for the rest.
+    createPipelines(colour, colour_);
+    // Fades (from skinned vertices only): the colour draws keep the finer share of a fading character's
+    // pixels, the fade partners' draws the coarser share (draw.frag.glsl, kFadeSide).
     for (std::uint32_t side = 1; side <= 2; ++side) {
         gpu::GraphicsPipelineDesc fade = colour;
         fade.vertexShader = draw_vert_spv;
@@ -109,12 +108,11 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     createPipelines(shadow, shadow_);
 }
 
-void CharacterDraw::createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3], bool skipFading) {
+void CharacterDraw::createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3]) {
     // Skinned vertices: positions and normals are two streams of the same buffer.
     desc.vertexShader = draw_vert_spv;
     desc.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-    desc.vertexConstants = {skipFading ? 1u : 0u};  // draw.vert.glsl's kSkipFading
     pipelines[static_cast<int>(DrawInput::SkinnedVertices)] = gpu::createGraphicsPipeline(context_, desc);
 
     // Bind-pose vertices, skinned while drawing.
@@ -146,7 +144,7 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
     const VkDeviceSize zero = 0;
     const bool colour = target == Target::Colour;
     const bool faded = fades && colour && input == DrawInput::SkinnedVertices;
-    const VkPipeline pipeline = (colour ? colour_ : shadow_)[static_cast<int>(input)];
+    const VkPipeline pipeline = faded ? fade_[0] : (colour ? colour_ : shadow_)[static_cast<int>(input)];
     // The shadow pass's commands follow the colour pass's in each buffer (render/draw_lists.h).
     switch (input) {
         case DrawInput::SkinnedVertices: {
@@ -159,12 +157,7 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
                 lists_.totals().buffer, colour ? offsetof(gpu::DrawTotals, drawCount) : offsetof(gpu::DrawTotals, shadowDrawCount),
                 lists_.drawCapacity(), stride);
             if (faded) {
-                // The fading characters (skipped above): their finer level on its share of their pixels,
-                // then their coarser level on the pixels it left.
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[0]);
-                vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadingDrawBase()} * stride,
-                                              lists_.totals().buffer, offsetof(gpu::DrawTotals, fading),
-                                              lists_.drawCapacity(), stride);
+                // The fading characters' coarser level, on the pixels their finer level left.
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[1]);
                 vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadeDrawBase()} * stride,
                                               lists_.totals().buffer, offsetof(gpu::DrawTotals, fadeDrawCount),

@@ -59,8 +59,7 @@ public:
 private:
     void createPipelines(VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target);
     // The three pipelines (skinned, per character, instanced) for one target's formats.
-    // `skipFading`: the skinned-vertex pipeline leaves fading characters to the fade pipelines.
-    void createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3], bool skipFading = false);
+    void createPipelines(gpu::GraphicsPipelineDesc desc, VkPipeline (&pipelines)[3]);
     void release();
     void bindCommon(VkCommandBuffer cmd, VkPipeline pipeline, VkDescriptorSet sceneSet, const ScenePush& push) const;
 
