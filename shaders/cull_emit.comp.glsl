@@ -57,8 +57,17 @@ void main() {
         BucketRecord shadowBucket = buckets[b - bucket.list.y + (shadow & SHADOW_LEVEL_MASK)];
         uint vertexOffset = fixedLayout != 0u ? bucket.fixedLayout.x + characters[c].ids.z * bucket.mesh.z
                                               : frames[b].vertexBase + k * bucket.mesh.z;
-        draws[i] = DrawIndexedCommand(bucket.mesh.y, inView, bucket.mesh.x, int(vertexOffset), c);
+        // A fading character (in view, within a fade band) is drawn from its own list below, dithered.
+        bool fading = inView != 0u && (shadow >> FADE_SHIFT) != 0u;
+        draws[i] = DrawIndexedCommand(bucket.mesh.y, fading ? 0u : inView, bucket.mesh.x, int(vertexOffset), c);
         if (slotBoneRows != 0u) characters[c].ids.y = i * slotBoneRows;
+        // Its colour draw is listed apart (after the fade partners') for the pipeline that dithers, and
+        // has no instance in draws[i]: the colour pass draws everyone else with the pipeline that does
+        // not discard and so keeps the early depth test (a vertex shader skipping the fading instead
+        // cost the vertex-bound frames more than it saved: docs/picture-quality.md).
+        if (fading)
+            draws[fadeDrawBase + shadowDrawBase + atomicAdd(totals.fading.x, 1u)] =
+                DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(vertexOffset), c);
         if (inView != 0u && (shadow >> FADE_SHIFT) != 0u && bucket.list.y + 1u < LOD_COUNT) {
             BucketRecord coarser = buckets[b + 1u];
             draws[fadeDrawBase + atomicAdd(totals.fadeDrawCount, 1u)] =

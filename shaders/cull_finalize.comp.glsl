@@ -39,5 +39,6 @@ void main() {
     totals.skinnedVertices = vertexBase;
     totals.shadowDrawCount = 0u;  // the emit pass appends the shadow draws
     totals.fadeDrawCount = 0u;    // and the fade partners' draws
+    totals.fading = uvec4(0u);    // and the fading characters' own colour draws
     totals.emitDispatch = uvec4(groupsFor(drawBase, CULL_WORKGROUP_SIZE), 1u, 1u, 0u);
 }

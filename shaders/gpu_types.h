@@ -125,6 +125,7 @@ struct DrawTotals {
     uint shadowDrawCount; // mesh shadow casters = draws in the shadow pass's compacted list
     uint fadeDrawCount;   // fading characters whose coarser level is a mesh: draws in the fade partners' list
     uvec4 emitDispatch;   // indirect dispatch of the emit pass (x groups, y = z = 1)
+    uvec4 fading;         // x: fading characters' colour draws (their finer share, dithered), in their own list
 };
 
 // One model's impostors: where its cells are in the atlas and how they were captured. Cell of

@@ -176,7 +176,9 @@ struct FrameCounts {
 // as uint32 indices, and draw with vkCmdDrawIndexedIndirectCount(draws, 0, drawCount,
 // drawCountOffset, maxDraws, 20). firstInstance of each draw is the character's index. Valid after
 // recordCompute of the frame, for the methods that skin into a buffer (not VertexShader*:
-// `skinned` is false there).
+// `skinned` is false there). With lodFade on, a character within a fade band has no instance in
+// `draws` (the renderer draws it dithered from a list of its own): draw also
+// vkCmdDrawIndexedIndirectCount(draws, fadingDrawsOffset, drawCount, fadingCountOffset, maxDraws, 20).
 struct FrameOutput {
     bool skinned = false;
     VkBuffer vertices = VK_NULL_HANDLE;
@@ -186,6 +188,7 @@ struct FrameOutput {
     VkBuffer drawCount = VK_NULL_HANDLE;
     VkDeviceSize drawCountOffset = 0;
     std::uint32_t maxDraws = 0;
+    VkDeviceSize fadingDrawsOffset = 0, fadingCountOffset = 0;  // lodFade: the fading characters' draws
     // Stages and accesses the renderer wrote these with: a host pass reading them needs no barrier of
     // its own when it runs after recordCompute in the same queue (the renderer's own barrier covers
     // vertex input and indirect reads); these are for hosts that read them in compute.

@@ -245,6 +245,8 @@ FrameOutput Renderer::output() const {
     out.drawCount = o.drawCount;
     out.drawCountOffset = o.drawCountOffset;
     out.maxDraws = o.maxDraws;
+    out.fadingDrawsOffset = o.fadingDrawsOffset;
+    out.fadingCountOffset = o.fadingCountOffset;
     return out;
 }
 

@@ -268,6 +268,8 @@ FrameOutput CrowdRecorder::output() const {
     out.drawCount = lists_.totals().buffer;
     out.drawCountOffset = offsetof(gpu::DrawTotals, drawCount);
     out.maxDraws = lists_.drawCapacity();
+    out.fadingDrawsOffset = VkDeviceSize{lists_.fadingDrawBase()} * sizeof(gpu::DrawIndexedCommand);
+    out.fadingCountOffset = offsetof(gpu::DrawTotals, fading);
     out.characters = buffers_.characters().buffer;
     return out;
 }

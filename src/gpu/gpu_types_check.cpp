@@ -22,7 +22,7 @@ static_assert(sizeof(DrawIndexedCommand) == sizeof(VkDrawIndexedIndirectCommand)
 static_assert(offsetof(DrawIndexedCommand, vertexOffset) == offsetof(VkDrawIndexedIndirectCommand, vertexOffset));
 static_assert(offsetof(DrawIndexedCommand, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
 // emitDispatch is read by vkCmdDispatchIndirect: 16-byte aligned after four uints.
-static_assert(sizeof(DrawTotals) == 32 && offsetof(DrawTotals, emitDispatch) == 16);
+static_assert(sizeof(DrawTotals) == 48 && offsetof(DrawTotals, emitDispatch) == 16 && offsetof(DrawTotals, fading) == 32);
 static_assert(sizeof(ImpostorModel) == 48 && offsetof(ImpostorModel, views) == 16 && offsetof(ImpostorModel, square) == 32);
 // Written with atomics, one uint at a time; the draws follow the header as VkDrawIndexedIndirectCommands.
 static_assert(sizeof(ImpostorFrame) == 16 && offsetof(ImpostorFrame, demoted) == 8);

@@ -85,8 +85,10 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     colour.samples = target.samples;
     colour.layout = layout_;
     createPipelines(colour, colour_);
-    // Fades (from skinned vertices only): the colour draws keep the finer share of a fading character's
-    // pixels, the fade partners' draws the coarser share (draw.frag.glsl, kFadeSide).
+    // Fades (from skinned vertices only): a fading character's own draw keeps the finer share of its
+    // pixels, its fade partner's draw the coarser share (draw.frag.glsl, kFadeSide). Only they discard:
+    // the colour list holds no instance of a fading character (cull_emit.comp.glsl), so the colour
+    // pipeline above keeps the early depth test for the rest.
     for (std::uint32_t side = 1; side <= 2; ++side) {
         gpu::GraphicsPipelineDesc fade = colour;
         fade.vertexShader = draw_vert_spv;
@@ -144,7 +146,7 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
     const VkDeviceSize zero = 0;
     const bool colour = target == Target::Colour;
     const bool faded = fades && colour && input == DrawInput::SkinnedVertices;
-    const VkPipeline pipeline = faded ? fade_[0] : (colour ? colour_ : shadow_)[static_cast<int>(input)];
+    const VkPipeline pipeline = (colour ? colour_ : shadow_)[static_cast<int>(input)];
     // The shadow pass's commands follow the colour pass's in each buffer (render/draw_lists.h).
     switch (input) {
         case DrawInput::SkinnedVertices: {
@@ -157,7 +159,12 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
                 lists_.totals().buffer, colour ? offsetof(gpu::DrawTotals, drawCount) : offsetof(gpu::DrawTotals, shadowDrawCount),
                 lists_.drawCapacity(), stride);
             if (faded) {
-                // The fading characters' coarser level, on the pixels their finer level left.
+                // The fading characters (no instance above): their finer level on its share of their pixels,
+                // then their coarser level on the pixels it left.
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[0]);
+                vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadingDrawBase()} * stride,
+                                              lists_.totals().buffer, offsetof(gpu::DrawTotals, fading),
+                                              lists_.drawCapacity(), stride);
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[1]);
                 vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadeDrawBase()} * stride,
                                               lists_.totals().buffer, offsetof(gpu::DrawTotals, fadeDrawCount),

@@ -84,7 +84,8 @@ public:
     const gpu::Buffer& visible() const { return visible_; }
     std::uint32_t shadowListBase() const { return shadowListBase_; }
     // The compacted draws: the colour pass's, then from drawCapacity() the shadow pass's, then from
-    // fadeDrawBase() the fade partners' (a fading character's coarser mesh level).
+    // fadeDrawBase() the fade partners' (a fading character's coarser mesh level), then from
+    // fadingDrawBase() the fading characters' colour draws again (their finer level, dithered).
     const gpu::Buffer& draws() const { return draws_; }
     // One per character slot: the colour pass's, then from characterCount() the shadow pass's (vs only:
     // one unused command otherwise).
@@ -108,6 +109,8 @@ public:
     std::uint32_t drawCapacity() const { return drawCapacity_; }
     // Where the fade partners' draws start in draws() (after the shadow pass's; as many at most).
     std::uint32_t fadeDrawBase() const { return 2 * drawCapacity_; }
+    // Where the fading characters' own colour draws start (after the partners'; as many at most).
+    std::uint32_t fadingDrawBase() const { return 3 * drawCapacity_; }
     std::uint32_t meshCapacity() const { return meshCapacity_; }
     const gpu::Buffer& readback(std::uint32_t frameSlot) const { return readback_[frameSlot]; }
     // Where the CPU path writes a frame's counts and lists before they are copied to the GPU.
