@@ -558,9 +558,12 @@ void recordIdPass(VkCommandBuffer cmd, const Target& target, const crowdgpu::Ren
                            viewProjection.data());
         vkCmdBindVertexBuffers(cmd, 0, 1, &out.vertices, &out.positionsOffset);
         vkCmdBindIndexBuffer(cmd, out.indices, 0, VK_INDEX_TYPE_UINT32);
-        // The renderer's own draws after culling and LOD: one per visible character.
+        // The renderer's own draws after culling and LOD: one per visible character, and those fading
+        // between two levels (lodFade) from their own list.
         vkCmdDrawIndexedIndirectCount(cmd, out.draws, 0, out.drawCount, out.drawCountOffset, out.maxDraws,
                                       sizeof(VkDrawIndexedIndirectCommand));
+        vkCmdDrawIndexedIndirectCount(cmd, out.draws, out.fadingDrawsOffset, out.drawCount, out.fadingCountOffset,
+                                      out.maxDraws, sizeof(VkDrawIndexedIndirectCommand));
     }
     vkCmdEndRendering(cmd);
 }

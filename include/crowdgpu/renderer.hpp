@@ -116,9 +116,9 @@ struct RendererSettings {
     // the impostor threshold) a character is drawn at both levels, each on a complementary screen-space
     // dither of its pixels, the coarser level's share rising across that band of sizes, so no change
     // pops (hysteresis is then not needed). With the methods that skin into a buffer or impostors;
-    // the vertex-shader methods do not fade. Off (the default: on the H100 fades cost 27-29 % of a
-    // mesh-heavy frame, docs/picture-quality.md): levels switch at once, with hysteresis.
-    bool lodFade = false;
+    // the vertex-shader methods do not fade. On the H100 fades cost 5-15 % of a mesh-heavy frame
+    // (docs/picture-quality.md). Off: levels switch at once, with hysteresis.
+    bool lodFade = true;
     bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
     float impostorThreshold = 32.0f;
     // Impostors blend the two nearest views and the two nearest animation frames (four atlas cells);

@@ -43,7 +43,7 @@ usage: crowd-bench [options]
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
   --shadow-raster hardware|compute  the shadow map's mesh casters by the graphics pipeline or in compute
                        (default compute)
-  --lod-fade on|off    level and impostor changes fade across the hysteresis band (default off)
+  --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
   --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default auto)

@@ -60,8 +60,7 @@ usage: crowd-render [options]
                           fraction of it, 0..0.5 (default 0.1)
   --lod-fade on|off       within that fraction of a threshold a character is drawn at both levels on
                           complementary dithered pixels, so level and impostor changes fade instead of
-                          popping (in place of hysteresis; not with vs and vs-instanced) (default off:
-                          +27-29 % of a mesh-heavy frame on the H100)
+                          popping (in place of hysteresis; not with vs and vs-instanced) (default on)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
   --behaviour NAME        in-place (every character loops its clip where it stands, as in the paper),
                           march (a formation in step: out, about turn, back, halt) or mill (each

@@ -31,7 +31,7 @@ struct CullOptions {
     float impostorThreshold = 32.0f;
     bool shadowLod = true;  // casters' level in the shadow map from their size there (crowdgpu::RendererSettings)
     crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Compute;  // how the map's mesh casters are drawn
-    bool lodFade = false;       // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
+    bool lodFade = true;        // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
     bool impostorBlend = true;  // impostors blend four atlas cells, or show the nearest (crowdgpu::RendererSettings)
     // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
     crowdgpu::Raster raster = crowdgpu::Raster::Auto;
