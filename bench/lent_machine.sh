@@ -21,6 +21,21 @@ find_device() {  # SCRIPT [QUIET]
   [[ -n ${2:-} ]] || cat "$res/nvidia-smi.txt"
 }
 
+# The start every run shares, once the script has set device, bin, res and out: a fresh $res and $out,
+# the loader, $bin on the library path, device_flag, and the device found (find_device SCRIPT [QUIET]).
+# The script's own probe() when it defined one, else crowd-render's one-frame run.
+begin_run() {  # SCRIPT [QUIET]
+  rm -rf "$res"
+  mkdir -p "$res" "$out"
+  install_vulkan_loader
+  export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  device_flag=()
+  [[ -n $device ]] && device_flag=(--device "$device")
+  declare -F probe >/dev/null ||
+    probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
+  find_device "$@"
+}
+
 # run NAME PROGRAM ARGS...: its output in $res/NAME.txt, its command in $res/commands.txt; a failure
 # is counted in $failures and its last lines printed. Returns the program's status.
 run() {

@@ -34,15 +34,8 @@ read -r -a issue_counts <<<"${ISSUE_COUNTS:-1000000 4000000 10000000}"
 bin=$(realpath "${BIN:-.devbin}")
 res=/tmp/compute-raster
 out=${OUT:-/tmp/out}
-rm -rf "$res"
-mkdir -p "$res/pictures" "$out"
-install_vulkan_loader
-export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-device_flag=()
-[[ -n $device ]] && device_flag=(--device "$device")
-
-probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
-find_device run_compute_raster
+begin_run run_compute_raster
+mkdir -p "$res/pictures"
 
 failures=0
 every_impostor=(--impostors on --lod-thresholds 100000,50000 --impostor-threshold 40000)

@@ -23,16 +23,9 @@ stress_count=${STRESS_COUNT:-100000}
 bin=$PWD/.devbin
 res=/tmp/example
 out=${OUT:-/tmp/out}
-rm -rf "$res"
-mkdir -p "$res" "$out"
-install_vulkan_loader
-export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-device_flag=()
-[[ -n $device ]] && device_flag=(--device "$device")
-
 # The example finds the device by name, or the NVIDIA driver is not among the loader's: name its ICD.
 probe() { "$bin/embed_headless" "${device_flag[@]}" --count 1 "$res" 64x64 1 >"$res/probe.txt" 2>&1; }
-find_device run_example
+begin_run run_example
 
 failures=0
 

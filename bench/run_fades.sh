@@ -23,15 +23,8 @@ impostor_count=${IMPOSTOR_COUNT:-1000000}
 bin=$PWD/.devbin
 res=/tmp/fades
 out=${OUT:-/tmp/out}
-rm -rf "$res"
-mkdir -p "$res" "$out"
-install_vulkan_loader
-export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-device_flag=()
-[[ -n $device ]] && device_flag=(--device "$device")
-
 probe() { "$bin/crowd-bench" "${device_flag[@]}" --counts 1 --frames 1 --warmup 0 --size 64x64 >"$res/probe.txt" 2>&1; }
-find_device run_fades
+begin_run run_fades
 
 failures=0
 

@@ -21,15 +21,7 @@ count=${COUNT:-1000000}
 bin=$PWD/.devbin
 res=/tmp/planning
 out=${OUT:-/tmp/out}
-rm -rf "$res"
-mkdir -p "$res" "$out"
-install_vulkan_loader
-export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-device_flag=()
-[[ -n $device ]] && device_flag=(--device "$device")
-
-probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
-find_device run_planning
+begin_run run_planning
 
 # The first value of "$2" in the JSON file $1 (crowd-bench's report; its CSV has no planning columns).
 json_value() { grep -o "\"$2\": *[-0-9.e+]*" "$1" | head -1 | sed 's/.*: *//'; }

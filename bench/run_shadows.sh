@@ -23,16 +23,8 @@ stress_count=${STRESS_COUNT:-100000}
 bin=$PWD/.devbin
 res=/tmp/shadows
 out=${OUT:-/tmp/out}
-rm -rf "$res"
-mkdir -p "$res/pictures" "$out"
-install_vulkan_loader
-export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-device_flag=()
-[[ -n $device ]] && device_flag=(--device "$device")
-
-# The programs find the device by name, or the NVIDIA driver is not among the loader's: name its ICD.
-probe() { "$bin/crowd-render" "${device_flag[@]}" --count 1 --frames 1 --size 64x64 --out "$res/probe.png" >"$res/probe.txt" 2>&1; }
-find_device run_shadows
+begin_run run_shadows
+mkdir -p "$res/pictures"
 
 failures=0
 

@@ -25,16 +25,9 @@ device=${DEVICE-NVIDIA}
 bin=$PWD/.devbin
 res=/tmp/ten-million
 out=${OUT:-/tmp/out}
-rm -rf "$res"
-mkdir -p "$res" "$out"
-install_vulkan_loader
-export LD_LIBRARY_PATH=$bin${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-device_flag=()
-[[ -n $device ]] && device_flag=(--device "$device")
-
 probe() { "$bin/crowd-bench" "${device_flag[@]}" --quick --methods compute --models soldier --counts 1 \
             --csv "$res/probe.csv" >"$res/probe.txt" 2>&1; }
-find_device run_ten_million
+begin_run run_ten_million
 
 failures=0
 cameras="above inside"

@@ -84,12 +84,6 @@ float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, 
     return margin;
 }
 
-std::vector<std::uint32_t> differ(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
-    std::vector<std::uint32_t> result;
-    std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(result));
-    return result;
-}
-
 }  // namespace
 
 // A crowd of 900 flown over with impostors, a wide band (25 %) so that many characters fade at each
@@ -135,8 +129,8 @@ TEST_F(GpuTest, FadesEqualTheCpuReferenceAlongACameraPath) {
                 << "character " << c << " at " << seconds << " s: " << what << " differs";
         };
         for (std::size_t b = 0; b < expectedVisible.size(); ++b)
-            for (std::uint32_t c : differ(expectedVisible[b], gpuVisible[b])) expectNearDecision(c, "its bucket");
-        for (std::uint32_t c : differ(cpuImpostors, gpuImpostors)) expectNearDecision(c, "its impostor");
+            for (std::uint32_t c : test::differ(expectedVisible[b], gpuVisible[b])) expectNearDecision(c, "its bucket");
+        for (std::uint32_t c : test::differ(cpuImpostors, gpuImpostors)) expectNearDecision(c, "its impostor");
         std::uint32_t expectedPartners = 0;
         for (std::uint32_t c = 0; c < crowd.size(); ++c) {
             if (gpu.states[c] != expected.states[c]) expectNearDecision(c, "its state");

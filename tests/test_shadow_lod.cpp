@@ -78,13 +78,6 @@ float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, 
     return margin;
 }
 
-// Characters in one sorted list and not the other.
-std::vector<std::uint32_t> differ(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
-    std::vector<std::uint32_t> result;
-    std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(result));
-    return result;
-}
-
 }  // namespace
 
 // A crowd of 900 flown over with impostors on, the shadow thresholds set each frame around the casters'
@@ -135,11 +128,11 @@ TEST_F(GpuTest, ShadowLevelsAndCastersEqualTheCpuReferenceAlongACameraPath) {
                 << "character " << c << " at " << seconds << " s: " << what << " differs";
         };
         for (std::size_t b = 0; b < expected.casters.size(); ++b) {
-            for (std::uint32_t c : differ(expected.casters[b], gpu.casters[b])) expectNearDecision(c, "its shadow level");
-            for (std::uint32_t c : differ(expectedVisible[b], gpuVisible[b])) expectNearDecision(c, "its skinned level");
+            for (std::uint32_t c : test::differ(expected.casters[b], gpu.casters[b])) expectNearDecision(c, "its shadow level");
+            for (std::uint32_t c : test::differ(expectedVisible[b], gpuVisible[b])) expectNearDecision(c, "its skinned level");
             if (!gpu.casters[b].empty()) shadowLevelsUsed.insert(static_cast<std::uint32_t>(b % LOD_COUNT));
         }
-        for (std::uint32_t c : differ(expected.impostors, gpu.impostors)) expectNearDecision(c, "its impostor shadow");
+        for (std::uint32_t c : test::differ(expected.impostors, gpu.impostors)) expectNearDecision(c, "its impostor shadow");
         for (std::uint32_t c = 0; c < crowd.size(); ++c) {
             if (gpu.states[c] != expected.states[c]) expectNearDecision(c, "its shadow state");
             const std::uint32_t state = gpu.states[c];

@@ -181,11 +181,14 @@ gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) con
         lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
     // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too,
     // those outside the shadow map's volume are not, and each caster's level comes from its size there.
-    const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(view), shape_, render::lightDirection());
-    render::setShadowUniforms(uniforms, cull_, shadows_, light, shadowMap_.size(), render::lightDirection());
+    render::setShadowUniforms(uniforms, cull_, shadows_, lightOf(view), shadowMap_.size(), render::lightDirection());
     uniforms.limits.z = lists_.meshCapacity();
     if (!fadesDrawn()) uniforms.fade.x = 0u;
     return uniforms;
+}
+
+glm::mat4 CrowdRecorder::lightOf(const render::FrameView& view) const {
+    return render::lightViewProjection(render::cameraOf(view), render::aspectOf(view), shape_, render::lightDirection());
 }
 
 bool CrowdRecorder::fadesDrawn() const {
@@ -196,7 +199,7 @@ bool CrowdRecorder::fadesDrawn() const {
 
 void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& view) {
     const render::Camera camera = render::cameraOf(view);
-    const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(view), shape_, render::lightDirection());
+    const glm::mat4 light = lightOf(view);
     scene_.updateLight(slot, render::makeSceneUniforms(light, pool_.palette(), pool_.texturedMaterials(), 0.0f));
     scene_.update(slot, render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
                                                   pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f), light,
@@ -209,11 +212,7 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
     const render::Camera camera = render::cameraOf(views_[slot]);
     const bool compute = rastersShadowsInCompute();
-    if (compute) {
-        const glm::mat4 light = render::lightViewProjection(camera, render::aspectOf(views_[slot]), shape_,
-                                                            render::lightDirection());
-        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), light);
-    }
+    if (compute) shadowRaster_->rasterize(cmd, method_->skinnedVertices(), lightOf(views_[slot]));
     shadowMap_.beginRendering(cmd);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     if (compute)

@@ -185,6 +185,9 @@ private:
     std::optional<render::AnimationPath> animationThisFrame() const;
     void enableImpostors();
     void updateUniforms(std::uint32_t slot, const render::FrameView& view);
+    // The shadow map's view and projection for this view (culling, the scene's uniforms and the compute
+    // shadow raster all take it).
+    glm::mat4 lightOf(const render::FrameView& view) const;
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
     // The method and path from now on, with the bone blocks they need.
     void switchTo(skin::Method method, render::AnimationPath path);

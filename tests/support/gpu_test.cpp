@@ -1,6 +1,7 @@
 #include "support/gpu_test.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -177,6 +178,12 @@ ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const re
     std::memcpy(result.positions.data(), staging.mapped, bytes);
     std::memcpy(result.normals.data(), static_cast<const char*>(staging.mapped) + bytes, bytes);
     gpu::destroyBuffer(context, staging);
+    return result;
+}
+
+std::vector<std::uint32_t> differ(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+    std::vector<std::uint32_t> result;
+    std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(result));
     return result;
 }
 

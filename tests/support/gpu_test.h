@@ -95,6 +95,9 @@ struct ReadbackVertices {
 ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const render::SkinnedVertices& vertices,
                                      std::uint32_t firstVertex, std::uint32_t vertexCount);
 
+// Characters in one sorted list and not the other (GPU lists against the CPU reference's).
+std::vector<std::uint32_t> differ(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b);
+
 // A device buffer's bytes, copied to the host.
 std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::Buffer& buffer);
 
