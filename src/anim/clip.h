@@ -27,6 +27,9 @@ struct Channel {
 struct ClipEvent {
     std::string name;
     float time = 0.0f;  // seconds into the cycle, [0, duration]
+    // The joint where it happens (a footstep's foot), or -1: where a host puts dust or a sound. Its
+    // position at `time` in the clip gives the event a place (docs/events.md).
+    std::int32_t joint = -1;
 };
 
 struct Clip {
