@@ -20,4 +20,9 @@ std::optional<RasterMode> parseRasterMode(std::string_view name);
 // keeps to the measured range with a margin (0.6x of the hardware's time at 96 px).
 inline constexpr float kAutoRasterLimitPixels = 128.0f;
 
+// Under auto, the largest character (its pose sphere's diameter on screen, pixels) whose mesh the
+// compute rasterizer draws (render/mesh_raster.h); larger ones, and every one under raster hardware,
+// go to the hardware path. 0 until the H100's sweep sets it: auto draws meshes on the hardware.
+inline constexpr float kAutoMeshRasterLimitPixels = 0.0f;
+
 }  // namespace render
