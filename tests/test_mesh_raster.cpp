@@ -11,6 +11,7 @@
 #include "app/camera_path.h"
 #include "app/crowd_renderer.h"
 #include "render/frame_view.h"
+#include "api/renderer_data.h"
 #include "render/geometry_pool.h"
 #include "support/gltf_builder.h"
 #include "support/gpu_test.h"
@@ -345,4 +346,19 @@ TEST_F(GpuTest, MeshRasterFollowsTheTopLeftRule) {
     EXPECT_GT(onEdges, 16u);  // both diagonals and the outer left and top edges
     EXPECT_EQ(byRule, computePixels);
     if (HasFailure()) keepImages("mesh-raster-top-left", h.image, c.image);
+}
+
+// The library refuses a mesh limit that is negative or not a number, in one line.
+TEST_F(GpuTest, MeshRasterLimitIsChecked) {
+    for (const float bad : {-1.0f, std::nanf(""), 2e6f}) {
+        crowdgpu::RendererSettings settings;
+        settings.meshRasterLimit = bad;
+        try {
+            (void)crowdgpu::detail::rendererOptions(settings);
+            ADD_FAILURE() << "mesh raster limit " << bad << " accepted";
+        } catch (const crowdgpu::Error& e) {
+            EXPECT_EQ(e.code(), crowdgpu::ErrorCode::InvalidArgument);
+            EXPECT_NE(std::string(e.what()).find("mesh raster limit"), std::string::npos) << e.what();
+        }
+    }
 }
