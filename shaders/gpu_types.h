@@ -220,6 +220,33 @@ struct ImpostorSplit {
 };
 #define IMPOSTOR_RASTER_LARGE_PIXELS 16.0
 
+// ---- Meshes in the compute rasterizer (render/mesh_raster.h, docs/compute-raster.md) ----
+// Small characters' skinned triangles go into a visibility buffer of their own (the same 64-bit words:
+// depth bits above, the id below). The id's top bit marks a mesh; below it, the character's place in
+// the frame's mesh-raster list, shifted above the triangle's index within its draw (MeshRasterPush's
+// triangleBits: enough for the largest model's triangles).
+#define MESH_RASTER_ID_BIT 0x80000000u
+#define MESH_RASTER_WORKGROUP 64
+// Workgroups of the raster dispatch at most: they stride over the listed characters.
+#define MESH_RASTER_MAX_WORKGROUPS 16384u
+
+struct MeshRasterPush {
+    mat4 viewProjection;
+    vec4 camera;    // xyz: the eye, w: pixels per unit of size at unit distance (as CullUniforms::camera)
+    vec4 viewport;  // x, y: the viewport's extent in pixels; z: the largest pose sphere (its diameter on
+                    // screen, pixels) the compute path draws; w: unused
+    uvec4 limits;   // x: triangle bits of an id, y: the list's capacity, z: draws in the colour list at
+                    // most (DrawLists::drawCapacity), w: workgroups of the raster dispatch
+};
+
+// The meshes of this frame drawn in compute: their count (their colour draws keep no instance).
+struct MeshSplit {
+    uint computeCount;
+    uint unused0;
+    uint unused1;
+    uint unused2;
+};
+
 // ---- Animation on the GPU (anim/clip_library.h flattens the clips; render/animation_pass runs them) ----
 
 // Samples of a clip's root-motion curve per cycle (plus one: the curve's end, the stride).

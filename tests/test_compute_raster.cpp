@@ -435,8 +435,11 @@ TEST_F(GpuTest, RasterFlagIsCheckedInOneLineByEveryProgram) {
         EXPECT_NE(r.err.find(mention), std::string::npos) << arguments << " printed:\n" << r.err;
     };
     const std::string render = CROWD_RENDER_BINARY, bench = CROWD_BENCH_BINARY;
-    for (const std::string& program : {render, bench})
+    for (const std::string& program : {render, bench}) {
         expectOneLine(program, "--raster sideways", "--raster: 'sideways' is not hardware, compute or auto");
+        expectOneLine(program, "--mesh-raster-limit -4", "--mesh-raster-limit");
+        expectOneLine(program, "--mesh-raster-limit wide", "--mesh-raster-limit");
+    }
 #ifdef CROWD_VIEW_BINARY
     expectOneLine(CROWD_VIEW_BINARY, "--raster on", "--raster: 'on' is not hardware, compute or auto");
 #endif
@@ -451,4 +454,8 @@ TEST_F(GpuTest, RasterFlagIsCheckedInOneLineByEveryProgram) {
     const test::ProgramResult r = test::runProgram(render, small + " --raster compute --validation" + deviceFlag);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("raster compute"), std::string::npos) << r.out;
+    // Small meshes in compute under auto, impostors off, validation silent.
+    const test::ProgramResult meshes = test::runProgram(
+        render, "--count 16 --frames 2 --size 64x64 --mesh-raster-limit 64 --method compute --validation --out /dev/null" + deviceFlag);
+    EXPECT_EQ(meshes.exitCode, 0) << meshes.err;
 }

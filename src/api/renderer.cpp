@@ -66,6 +66,9 @@ render::CullSettings cullSettings(const RendererSettings& s) {
     return cull;
 }
 
+static_assert(RendererSettings{}.meshRasterLimit == render::kAutoMeshRasterLimitPixels,
+              "the public default is the recorder's");
+
 frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     if (!(s.lodThresholds[0] > s.lodThresholds[1] && s.lodThresholds[1] > 0.0f))
         throw Error(ErrorCode::InvalidArgument, "LOD thresholds must fall: lodThresholds[0] > lodThresholds[1] > 0");
@@ -75,6 +78,8 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
         throw Error(ErrorCode::InvalidArgument, "LOD hysteresis must lie in [0, 1)");
     if (s.shadowMapSize == 0 || s.shadowMapSize > 16384)
         throw Error(ErrorCode::InvalidArgument, "shadow map size must be 1 to 16384 texels");
+    if (!(s.meshRasterLimit >= 0.0f && s.meshRasterLimit <= 1e6f))
+        throw Error(ErrorCode::InvalidArgument, "the mesh raster limit must lie in [0, 1e6] pixels");
     frame::RecorderOptions o;
     o.target = {s.target.color, s.target.depth, s.target.samples};
     o.method = internalMethod(s.method);
@@ -87,6 +92,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.framesInFlight = s.framesInFlight;
     o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
     o.raster = internalRaster(s.raster);
+    o.meshRasterLimitPixels = s.meshRasterLimit;
     return o;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -76,6 +77,14 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       views_(options.framesInFlight) {
     if (cull_.impostors) enableImpostors();
     setShadowRaster(options.shadowRaster);
+    // Meshes in compute: every one it can take under compute, the small ones under auto (none while
+    // auto's limit is 0).
+    const float meshLimit = raster_ == render::RasterMode::Compute ? std::numeric_limits<float>::infinity()
+                            : raster_ == render::RasterMode::Auto  ? options.meshRasterLimitPixels
+                                                                   : 0.0f;
+    if (meshLimit > 0.0f)
+        meshRaster_ = std::make_unique<render::MeshRaster>(context_, pool_, buffers_, lists_, scene_.setLayout(),
+                                                           target_, options.framesInFlight, meshLimit);
 }
 
 void CrowdRecorder::setShadowRaster(render::ShadowRasterPath path) {
@@ -98,6 +107,11 @@ std::unique_ptr<skin::SkinningMethod> CrowdRecorder::createMethod(skin::Method m
 bool CrowdRecorder::setupPending() const {
     const gpu::SetupQueue* setup = context_.deferredSetup();
     return setup && setup->pending();
+}
+
+bool CrowdRecorder::rastersMeshesInCompute() const {
+    return meshRaster_ && method_->drawInput() == render::DrawInput::SkinnedVertices &&
+           meshRaster_->canRead(method_->skinnedVertices());
 }
 
 void CrowdRecorder::recordSetup(VkCommandBuffer cmd) {
@@ -160,8 +174,16 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         // Before the impostor draws: the colour draw's count is what the rasterizer leaves to it.
         const render::Camera camera = render::cameraOf(view);
         impostorRaster_->record(cmd, slot, view.projection * view.view, camera.eye, view.viewport.extent, impostorBlend_);
-        gpu::passDone(passes_, cmd, "raster");
     }
+    if (rastersMeshesInCompute()) {
+        // After skinning, before the colour draw: the small meshes leave the colour list for compute.
+        const render::Camera camera = render::cameraOf(view);
+        const float pixelsPerUnit =
+            static_cast<float>(view.viewport.extent.height) / (2.0f * std::tan(camera.verticalFov * 0.5f));
+        meshRaster_->record(cmd, slot, method_->skinnedVertices(), view.projection * view.view, camera.eye,
+                            pixelsPerUnit, view.viewport.extent);
+    }
+    if (impostorRaster_ || rastersMeshesInCompute()) gpu::passDone(passes_, cmd, "raster");
     if (impostorDraw_) impostorDraw_->recordDraws(cmd);
     if (!shadows_ && !shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
     shadowMapReady_ = shadowMapReady_ || !shadows_;
@@ -255,6 +277,7 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push, impostorBlend_);
     // The compute-rasterized impostors, merged with all of the above by their depth.
     if (impostorRaster_) impostorRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport, impostorBlend_);
+    if (rastersMeshesInCompute()) meshRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
     stages_[slot] = Stage::Idle;
 }
 
@@ -311,6 +334,7 @@ void CrowdRecorder::switchTo(skin::Method method, render::AnimationPath path) {
     const render::BoneBlocks blocks = skin::boneBlocksFor(method, path);
     if (method != previous || blocks != buffers_.boneBlocks()) {
         if (shadowRaster_) shadowRaster_->forgetVertices();  // the next method's buffer may reuse the handle
+        if (meshRaster_) meshRaster_->forgetVertices();
         method_.reset();  // its buffers go before the next method's come
         try {
             useBoneBlocks(blocks);
@@ -351,6 +375,7 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
     if (impostorDraw_) items.push_back({"impostor quad indices and draws", impostorDraw_->bytes()});
     if (impostorRaster_) items.push_back({"visibility buffers and raster split", impostorRaster_->bytes()});
+    if (meshRaster_) items.push_back({"mesh visibility buffers and raster list", meshRaster_->bytes()});
     for (const skin::MemoryItem& item : method_->memory()) items.push_back(item);
     return items;
 }

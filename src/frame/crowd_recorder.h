@@ -34,6 +34,7 @@
 #include "render/impostor_atlas.h"
 #include "render/impostor_draw.h"
 #include "render/impostor_raster.h"
+#include "render/mesh_raster.h"
 #include "render/raster_mode.h"
 #include "render/scene_pass.h"
 #include "render/shadow_map.h"
@@ -71,6 +72,9 @@ struct RecorderOptions {
     render::RasterMode raster = render::RasterMode::Hardware;
     // Under auto, the largest impostor (screen rectangle's longer side, pixels) drawn in compute.
     float rasterLimitPixels = render::kAutoRasterLimitPixels;
+    // Under auto, the largest character (pose sphere's diameter on screen, pixels) whose mesh is drawn in
+    // compute (render/mesh_raster.h); 0: none.
+    float meshRasterLimitPixels = render::kAutoMeshRasterLimitPixels;
     // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
     std::shared_ptr<const render::ImpostorAtlas> atlas;
     // Kept alive by what may outlive the recorder (its atlas, shared with other recorders): the
@@ -154,6 +158,10 @@ public:
     // The rasterizer the impostors get (options.raster, or hardware where auto lacked what it needs).
     render::RasterMode raster() const { return raster_; }
     const render::ImpostorRaster* impostorRaster() const { return impostorRaster_.get(); }
+    const render::MeshRaster* meshRaster() const { return meshRaster_.get(); }
+    // Whether this frame's small meshes go through the compute rasterizer (raster compute or auto, a
+    // method that skins into a buffer the pass can read).
+    bool rastersMeshesInCompute() const;
     skin::SkinningMethod& method() { return *method_; }
     const skin::SkinningMethod& method() const { return *method_; }
     const render::GeometryPool& pool() const { return pool_; }
@@ -215,6 +223,7 @@ private:
     std::shared_ptr<const render::ImpostorAtlas> atlas_;
     std::unique_ptr<render::ImpostorRaster> impostorRaster_;  // before impostorDraw_: it reads the split
     std::unique_ptr<render::ImpostorDraw> impostorDraw_;
+    std::unique_ptr<render::MeshRaster> meshRaster_;  // with raster compute or auto
     render::RasterMode raster_;  // in effect (auto without what it needs: hardware)
     float rasterLimitPixels_;
     render::CullSettings cull_;

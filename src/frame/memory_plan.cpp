@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/vulkan_context.h"
+#include "render/mesh_raster.h"
 #include "skin/skin_target_layout.h"
 #include "skin/skinned_capacity.h"
 
@@ -82,6 +83,23 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
         // and frame in flight) follow the viewport, which is not known here.
         if (options.raster != render::RasterMode::Hardware)
             plan.items.push_back({"visibility buffers and raster split", sizeof(gpu::ImpostorSplit) + n * 8});
+    }
+    // Small meshes in compute (methods that skin into a buffer): the list and split; the visibility
+    // buffers follow the viewport, as above.
+    const bool skinsIntoBuffer = options.method != skin::Method::VertexShader &&
+                                 options.method != skin::Method::VertexShaderInstanced;
+    const bool meshRaster = options.raster == render::RasterMode::Compute ||
+                            (options.raster == render::RasterMode::Auto && options.meshRasterLimitPixels > 0.0f);
+    if (meshRaster && skinsIntoBuffer) {
+        std::uint32_t largest = 1;
+        for (const model::SkinnedModel* model : crowd.models())
+            largest = std::max(largest, static_cast<std::uint32_t>(render::lodsOf(*model).at(0).indices.size() / 3));
+        const std::uint32_t drawCapacity = meshCapacityInEffect(options, crowd) > 0
+                                               ? std::min(meshCapacityInEffect(options, crowd), crowd.size())
+                                               : crowd.size();
+        plan.items.push_back({"mesh visibility buffers and raster list",
+                              render::meshRasterListBytes(render::meshRasterListCapacity(
+                                  drawCapacity, render::meshRasterTriangleBits(largest)))});
     }
     plan.items.push_back({"skinning method (" + std::string(skin::methodName(options.method)) + ")",
                           methodBytes(context, crowd, options)});

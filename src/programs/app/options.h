@@ -35,6 +35,8 @@ struct CullOptions {
     bool impostorBlend = true;  // impostors blend four atlas cells, or show the nearest (crowdgpu::RendererSettings)
     // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
     crowdgpu::Raster raster = crowdgpu::Raster::Auto;
+    // Under auto, the largest character (pixels across) whose mesh goes to compute (--mesh-raster-limit).
+    float meshRasterLimit = crowdgpu::RendererSettings{}.meshRasterLimit;
 };
 
 // What a crowd is: models, size, clip, seed.
