@@ -29,6 +29,7 @@
 #include "render/crowd_buffers.h"
 #include "render/cull_pass.h"
 #include "render/draw_lists.h"
+#include "render/event_pass.h"
 #include "render/frame_view.h"
 #include "render/geometry_pool.h"
 #include "render/impostor_atlas.h"
@@ -71,6 +72,10 @@ struct RecorderOptions {
     render::RasterMode raster = render::RasterMode::Hardware;
     // Under auto, the largest impostor (screen rectangle's longer side, pixels) drawn in compute.
     float rasterLimitPixels = render::kAutoRasterLimitPixels;
+    // Animation events of the characters in view, into a buffer for the host (render/event_pass.h);
+    // the buffer keeps eventCapacity records a frame.
+    bool events = true;
+    std::uint32_t eventCapacity = render::kDefaultEventCapacity;
     // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
     std::shared_ptr<const render::ImpostorAtlas> atlas;
     // Kept alive by what may outlive the recorder (its atlas, shared with other recorders): the
@@ -105,6 +110,9 @@ struct FrameOutput {
     VkDeviceSize fadingDrawsOffset = 0;
     VkDeviceSize fadingCountOffset = 0;
     VkBuffer characters = VK_NULL_HANDLE;  // CharacterRecord per character (firstInstance names it)
+    // With events on: gpu::EventHeader, then up to eventCapacity gpu::EventRecords from byte 16.
+    VkBuffer events = VK_NULL_HANDLE;
+    std::uint32_t eventCapacity = 0;
 };
 
 class CrowdRecorder {
@@ -160,6 +168,7 @@ public:
     const render::CrowdBuffers& buffers() const { return buffers_; }
     const render::DrawLists& drawLists() const { return lists_; }
     const render::CullPass& cullPass() const { return cullPass_; }
+    const render::EventPass* eventPass() const { return eventPass_.get(); }
     std::shared_ptr<const render::ImpostorAtlas> impostorAtlas() const { return atlas_; }
     const render::CrowdShape& shape() const { return shape_; }
     // What the cull pass gets for this view and the current settings (the CPU reference takes the same).
@@ -204,6 +213,7 @@ private:
     render::DrawLists lists_;
     render::CullPass cullPass_;
     render::AnimationPass animationPass_;
+    std::unique_ptr<render::EventPass> eventPass_;  // with events on
     std::uint32_t maxTargetDimension_;
     render::CrowdShape shape_;
     render::ShadowMap shadowMap_;

@@ -1,0 +1,252 @@
+// The GPU event buffer (render/event_pass.h, docs/events.md): each frame's list of the events that
+// characters in view fire equals crowd::Crowd::events for those characters and that window (the CPU
+// reference, in double), with positions at Crowd::jointWorld's; a full buffer keeps its capacity's
+// worth and counts the rest.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <span>
+#include <tuple>
+
+#include <gtest/gtest.h>
+
+#include "support/gpu_test.h"
+
+namespace {
+
+using test::GpuTest;
+
+constexpr double kFrame = 1.0 / 60.0;
+// Float on the epoch's clock against double: a firing time within this of the CPU's (measured: about
+// 2e-6 s), and an event this close to a frame's edge may land in the frame beside it.
+constexpr double kTimeTolerance = 1e-4;
+
+std::uint32_t jointNamed(const model::SkinnedModel& model, const std::string& name) {
+    const auto& names = model.skeleton.jointNames;
+    const auto it = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(it, names.end()) << name;
+    return static_cast<std::uint32_t>(it - names.begin());
+}
+
+// The soldier with footsteps on its walk and run (at the feet, a quarter and 0.7 of the cycle, as a glTF
+// file's extras would set them) and a breath on its idle with no joint (placed at the root).
+model::SkinnedModel soldierWithEvents() {
+    model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    const auto left = static_cast<std::int32_t>(jointNamed(soldier, "foot_l"));
+    const auto right = static_cast<std::int32_t>(jointNamed(soldier, "foot_r"));
+    for (anim::Clip& clip : soldier.clips) {
+        if (clip.name == "walk" || clip.name == "run")
+            clip.events = {{"step.left", 0.25f * clip.duration, left}, {"step.right", 0.7f * clip.duration, right}};
+        if (clip.name == "idle") clip.events = {{"breath", 0.5f * clip.duration, -1}};
+    }
+    return soldier;
+}
+
+struct GpuFrameEvents {
+    gpu::EventHeader header{};
+    std::vector<gpu::EventRecord> records;
+};
+
+GpuFrameEvents readEvents(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
+    const std::vector<std::byte> bytes = test::readBuffer(context, renderer.recorder().eventPass()->events());
+    GpuFrameEvents result;
+    std::memcpy(&result.header, bytes.data(), sizeof result.header);
+    result.records.resize(std::min(result.header.count, result.header.capacity));
+    std::memcpy(result.records.data(), bytes.data() + sizeof result.header, result.records.size() * sizeof(gpu::EventRecord));
+    return result;
+}
+
+std::vector<std::uint32_t> charactersInView(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
+    const std::vector<std::byte> bytes = test::readBuffer(context, renderer.drawLists().shadowStates());
+    std::vector<std::uint32_t> inView;
+    for (std::uint32_t c = 0; c < renderer.drawLists().characterCount(); ++c) {
+        std::uint32_t state = 0;
+        std::memcpy(&state, bytes.data() + c * sizeof state, sizeof state);
+        if (state & SHADOW_IN_VIEW_BIT) inView.push_back(c);
+    }
+    return inView;
+}
+
+// An event of either list in one frame: who, which, when (scene seconds) and where.
+struct Fired {
+    std::uint32_t character, clip, event;
+    double time;
+    glm::vec3 place{0.0f};
+};
+bool sameEvent(const Fired& a, const Fired& b) {
+    return a.character == b.character && a.clip == b.clip && a.event == b.event && std::abs(a.time - b.time) < kTimeTolerance;
+}
+bool byWhoAndWhen(const Fired& a, const Fired& b) {
+    return std::tie(a.character, a.clip, a.event, a.time) < std::tie(b.character, b.clip, b.event, b.time);
+}
+
+struct Comparison {
+    std::size_t matched = 0, nearEdge = 0, beforeReplan = 0, inCrossfade = 0;
+    double worstTime = 0.0, worstPlace = 0.0, worstPlaceInCrossfade = 0.0;
+};
+
+// Matches one frame's GPU events to the CPU's; an event in one list only must lie within
+// kTimeTolerance of the window's edge (float rounding put it in the frame beside).
+void compareFrame(const crowd::Crowd& crowd, const model::SkinnedModel& soldier, std::vector<Fired> gpuEvents,
+                  std::vector<Fired> cpuEvents, double from, double to, Comparison& out) {
+    std::sort(gpuEvents.begin(), gpuEvents.end(), byWhoAndWhen);
+    std::sort(cpuEvents.begin(), cpuEvents.end(), byWhoAndWhen);
+    auto nearEdge = [&](const Fired& e) { return std::abs(e.time - from) < kTimeTolerance || std::abs(e.time - to) < kTimeTolerance; };
+    std::vector<bool> used(gpuEvents.size(), false);
+    for (const Fired& cpu : cpuEvents) {
+        std::size_t found = gpuEvents.size();
+        for (std::size_t i = 0; i < gpuEvents.size(); ++i)
+            if (!used[i] && sameEvent(gpuEvents[i], cpu)) found = i, i = gpuEvents.size();
+        if (found == gpuEvents.size()) {
+            EXPECT_TRUE(nearEdge(cpu)) << "character " << cpu.character << " clip " << cpu.clip << " event " << cpu.event
+                                       << " at " << cpu.time << " s: missing from the GPU's list";
+            out.nearEdge += 1;
+            continue;
+        }
+        used[found] = true;
+        const Fired& gpu = gpuEvents[found];
+        ++out.matched;
+        out.worstTime = std::max(out.worstTime, std::abs(gpu.time - cpu.time));
+        if (cpu.time < crowd.plans()[cpu.character].start) ++out.beforeReplan;
+        // Where: the event's joint (its root without one) as Crowd::jointWorld places it then.
+        const std::int32_t joint = soldier.clips[cpu.clip].events[cpu.event].joint;
+        glm::vec3 expected = crowd.stateKnown(cpu.character, cpu.time).position;
+        if (joint >= 0) {
+            const anim::Affine world = crowd.jointWorld(cpu.character, static_cast<std::uint32_t>(joint), cpu.time);
+            expected = {world.row0.w, world.row1.w, world.row2.w};
+        }
+        const double error = glm::length(gpu.place - expected);
+        if (crowd.stateKnown(cpu.character, cpu.time).weight < 1.0f) {
+            ++out.inCrossfade;
+            out.worstPlaceInCrossfade = std::max(out.worstPlaceInCrossfade, error);
+        } else {
+            out.worstPlace = std::max(out.worstPlace, error);
+        }
+    }
+    for (std::size_t i = 0; i < gpuEvents.size(); ++i)
+        if (!used[i]) {
+            EXPECT_TRUE(nearEdge(gpuEvents[i])) << "character " << gpuEvents[i].character << " event at "
+                                                << gpuEvents[i].time << " s: on the GPU only";
+            out.nearEdge += 1;
+        }
+}
+
+// A milling crowd (walks, stops, crossfades, replans inside frames) seen by a close orbiting camera, so
+// characters come into and leave the view: 240 frames at 60 Hz from 62 s (across the epoch at 64 s), each frame's GPU list against Crowd::events for
+// the characters the frame had in view.
+TEST_F(GpuTest, GpuEventsEqualTheCrowdsEventsForTheCharactersInView) {
+    const model::SkinnedModel soldier = soldierWithEvents();
+    app::SceneOptions scene;
+    scene.count = 400;
+    crowd::BehaviourSettings behaviour;
+    behaviour.kind = crowd::Behaviour::Mill;
+    behaviour.millRadius = 4.0f;
+    crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene), behaviour);
+    test::RendererOptions options;
+    options.size = {160, 90};
+    options.method = skin::Method::Compute;
+    options.shadows = false;
+    test::TestRenderer renderer(*context, crowd, options);
+    const app::CrowdShape shape = test::shapeOf(crowd);
+    Comparison comparison;
+    std::size_t cpuTotal = 0, outOfView = 0;
+    double previous = 0.0;
+    std::size_t beforeEpoch = 0, replannedTwice = 0;  // fired before the epoch in the frame whose window crosses it
+    for (int frame = 0; frame <= 240; ++frame) {
+        const double time = 62.005 + frame * kFrame;
+        // Orbiting, closer than the framing view: the crowd's edges come into and leave the view.
+        renderer.camera = app::cameraOnPath(app::CameraPath::Orbit, shape, 160.0f / 90.0f, 8.0 * time);
+        renderer.camera.eye = renderer.camera.target + 0.3f * (renderer.camera.eye - renderer.camera.target);
+        renderer.renderFrame(time);
+        renderer.finish();
+        const GpuFrameEvents gpu = readEvents(*context, renderer);
+        ASSERT_EQ(gpu.header.dropped, 0u);
+        ASSERT_EQ(gpu.header.lostSegments, 0u);
+        if (frame == 0) {
+            EXPECT_EQ(gpu.header.count, 0u);  // the first frame has no window
+            previous = time;
+            continue;
+        }
+        const std::vector<std::uint32_t> inView = charactersInView(*context, renderer);
+        outOfView += crowd.size() - inView.size();
+        // A character replanned twice in the window is known from its last segment but one on (the
+        // CPU refuses earlier times, the GPU fires from there): ask for what it knows.
+        std::vector<crowd::FiredEvent> cpu;
+        std::vector<std::uint32_t> known;
+        for (std::uint32_t c : inView) {
+            if (crowd.knownFrom(c) <= previous) known.push_back(c);
+            else crowd.events(std::span(&c, 1), crowd.knownFrom(c), time, cpu), ++replannedTwice;
+        }
+        crowd.events(known, previous, time, cpu);
+        cpuTotal += cpu.size();
+        for (const crowd::FiredEvent& e : cpu) beforeEpoch += e.time < 64.0 && time > 64.0 ? 1u : 0u;
+        std::vector<Fired> cpuEvents, gpuEvents;
+        for (const crowd::FiredEvent& e : cpu) cpuEvents.push_back({e.character, e.clip, e.event, e.time});
+        for (const gpu::EventRecord& r : gpu.records)
+            gpuEvents.push_back({r.ids.x, r.ids.y, r.ids.z, time - static_cast<double>(r.place.w), glm::vec3(r.place)});
+        compareFrame(crowd, soldier, gpuEvents, cpuEvents, previous, time, comparison);
+        previous = time;
+    }
+    // Not trivial: many events, some characters out of view, some events fired by the segment a
+    // replan inside the frame ended, some in crossfades; few need the frame beside.
+    EXPECT_GT(cpuTotal, 150u);
+    EXPECT_GT(outOfView, 0u);
+    EXPECT_GT(comparison.beforeReplan, 0u);
+    EXPECT_GT(comparison.inCrossfade, 0u);
+    EXPECT_GT(beforeEpoch, 0u);
+    EXPECT_LE(comparison.nearEdge, cpuTotal / 50);
+    EXPECT_LT(comparison.worstTime, kTimeTolerance);
+    // Positions: the placement at the event's time on the joint's clip pose, against the CPU's whole
+    // animation (1 mm; outside crossfades they differ by float rounding and the quadrature of the path).
+    // In a crossfade the GPU takes the firing clip's pose alone (weight >= 1/2): within 10 cm.
+    EXPECT_LT(comparison.worstPlace, 1e-3);
+    EXPECT_LT(comparison.worstPlaceInCrossfade, 0.1);
+    std::printf("[ events ] %zu matched (%zu near a frame's edge, %zu before a replan, %zu in crossfades, %zu before the "
+                "epoch); %zu character-frames out of view, %zu replanned twice in a frame; worst time %.2g s, place %.2g m (%.2g m in crossfades)\n",
+                comparison.matched, comparison.nearEdge, comparison.beforeReplan, comparison.inCrossfade, beforeEpoch,
+                outOfView, replannedTwice, comparison.worstTime, comparison.worstPlace, comparison.worstPlaceInCrossfade);
+}
+
+// A buffer of 8 records in a frame where many more fire: exactly 8 written, each one of the CPU's
+// events, and the rest counted as dropped.
+TEST_F(GpuTest, FullEventBufferKeepsItsCapacityAndCountsTheRest) {
+    const model::SkinnedModel soldier = soldierWithEvents();
+    app::SceneOptions scene;
+    scene.count = 100;
+    scene.clip = "walk";
+    crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
+    test::RendererOptions options;
+    options.size = {160, 90};
+    options.method = skin::Method::Compute;
+    options.shadows = false;
+    options.cull.mode = render::CullMode::Off;  // everyone in view
+    options.eventCapacity = 8;
+    test::TestRenderer renderer(*context, crowd, options);
+    renderer.camera = app::cameraOnPath(app::CameraPath::FlyOver, test::shapeOf(crowd), 160.0f / 90.0f, 0.0f);
+    renderer.renderFrame(1.0);
+    renderer.renderFrame(2.0);  // a one-second window: each walker steps about twice
+    renderer.finish();
+    const GpuFrameEvents gpu = readEvents(*context, renderer);
+    std::vector<std::uint32_t> everyone(crowd.size());
+    for (std::uint32_t c = 0; c < crowd.size(); ++c) everyone[c] = c;
+    std::vector<crowd::FiredEvent> cpu;
+    crowd.events(everyone, 1.0, 2.0, cpu);
+    ASSERT_GT(cpu.size(), 100u);
+    EXPECT_EQ(gpu.header.capacity, 8u);
+    EXPECT_EQ(gpu.header.count, 8u);
+    EXPECT_EQ(gpu.header.dropped + gpu.header.count, cpu.size());
+    ASSERT_EQ(gpu.records.size(), 8u);
+    std::vector<bool> taken(cpu.size(), false);
+    for (const gpu::EventRecord& r : gpu.records) {
+        const double time = 2.0 - static_cast<double>(r.place.w);
+        bool found = false;
+        for (std::size_t i = 0; i < cpu.size() && !found; ++i)
+            if (!taken[i] && cpu[i].character == r.ids.x && cpu[i].clip == r.ids.y && cpu[i].event == r.ids.z &&
+                std::abs(cpu[i].time - time) < kTimeTolerance)
+                taken[i] = found = true;
+        EXPECT_TRUE(found) << "record of character " << r.ids.x << " is no event the CPU fired";
+    }
+}
+
+}  // namespace
