@@ -155,6 +155,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.lodFade = cull.lodFade;
     settings.impostorBlend = cull.impostorBlend;
     settings.raster = cull.raster;
+    settings.events = cull.events;
     return settings;
 }
 
