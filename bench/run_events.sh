@@ -56,6 +56,7 @@ done
         continue
       fi
       pass=$(json_number "$json" events)
+      [[ -n $pass ]] && pass=$(printf "%.4f" "$pass")
       printf "%-6s %1s | %10s %10s | %10.3f %10.3f\n" "$events" "$round" "$(json_sum3 "$json" median_visible_per_lod)" \
         "${pass:--}" "$(json_number "$json" median_frame_ms)" "$(json_number "$json" gpu_total_ms)"
     done
