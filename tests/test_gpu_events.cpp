@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "crowd/epoch.h"
 #include "support/gpu_test.h"
 
 namespace {
@@ -132,80 +133,108 @@ void compareFrame(const crowd::Crowd& crowd, const model::SkinnedModel& soldier,
         }
 }
 
-// A milling crowd (walks, stops, crossfades, replans inside frames) seen by a close orbiting camera, so
-// characters come into and leave the view: 240 frames at 60 Hz from 62 s (across the epoch at 64 s), each frame's GPU list against Crowd::events for
-// the characters the frame had in view.
-TEST_F(GpuTest, GpuEventsEqualTheCrowdsEventsForTheCharactersInView) {
+struct OrbitRun : Comparison {
+    std::size_t cpuTotal = 0, outOfView = 0, beforeEpoch = 0, replannedTwice = 0;
+};
+
+// A milling crowd of `count` soldiers (walks, stops, crossfades, replans inside frames) seen by a close
+// orbiting camera, so characters come into and leave the view: `frames` frames at 60 Hz from `start`,
+// each frame's GPU list against Crowd::events for the characters the frame had in view.
+OrbitRun compareAlongAnOrbit(const gpu::VulkanContext& context, test::RendererOptions options, std::uint32_t count,
+                             int frames, double start) {
     const model::SkinnedModel soldier = soldierWithEvents();
     app::SceneOptions scene;
-    scene.count = 400;
+    scene.count = count;
     crowd::BehaviourSettings behaviour;
     behaviour.kind = crowd::Behaviour::Mill;
     behaviour.millRadius = 4.0f;
     crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene), behaviour);
-    test::RendererOptions options;
     options.size = {160, 90};
-    options.method = skin::Method::Compute;
     options.shadows = false;
-    test::TestRenderer renderer(*context, crowd, options);
+    test::TestRenderer renderer(context, crowd, options);
     const app::CrowdShape shape = test::shapeOf(crowd);
-    Comparison comparison;
-    std::size_t cpuTotal = 0, outOfView = 0;
+    OrbitRun run;
     double previous = 0.0;
-    std::size_t beforeEpoch = 0, replannedTwice = 0;  // fired before the epoch in the frame whose window crosses it
-    for (int frame = 0; frame <= 240; ++frame) {
-        const double time = 62.005 + frame * kFrame;
+    for (int frame = 0; frame <= frames; ++frame) {
+        const double time = start + frame * kFrame;
         // Orbiting, closer than the framing view: the crowd's edges come into and leave the view.
         renderer.camera = app::cameraOnPath(app::CameraPath::Orbit, shape, 160.0f / 90.0f, 8.0 * time);
         renderer.camera.eye = renderer.camera.target + 0.3f * (renderer.camera.eye - renderer.camera.target);
         renderer.renderFrame(time);
         renderer.finish();
-        const GpuFrameEvents gpu = readEvents(*context, renderer);
-        ASSERT_EQ(gpu.header.dropped, 0u);
-        ASSERT_EQ(gpu.header.lostSegments, 0u);
+        const GpuFrameEvents gpu = readEvents(context, renderer);
+        EXPECT_EQ(gpu.header.dropped, 0u);
+        EXPECT_EQ(gpu.header.lostSegments, 0u);
         if (frame == 0) {
             EXPECT_EQ(gpu.header.count, 0u);  // the first frame has no window
             previous = time;
             continue;
         }
-        const std::vector<std::uint32_t> inView = charactersInView(*context, renderer);
-        outOfView += crowd.size() - inView.size();
+        const std::vector<std::uint32_t> inView = charactersInView(context, renderer);
+        run.outOfView += crowd.size() - inView.size();
         // A character replanned twice in the window is known from its last segment but one on (the
         // CPU refuses earlier times, the GPU fires from there): ask for what it knows.
         std::vector<crowd::FiredEvent> cpu;
         std::vector<std::uint32_t> known;
         for (std::uint32_t c : inView) {
             if (crowd.knownFrom(c) <= previous) known.push_back(c);
-            else crowd.events(std::span(&c, 1), crowd.knownFrom(c), time, cpu), ++replannedTwice;
+            else crowd.events(std::span(&c, 1), crowd.knownFrom(c), time, cpu), ++run.replannedTwice;
         }
         crowd.events(known, previous, time, cpu);
-        cpuTotal += cpu.size();
-        for (const crowd::FiredEvent& e : cpu) beforeEpoch += e.time < 64.0 && time > 64.0 ? 1u : 0u;
+        run.cpuTotal += cpu.size();
+        // Fired before the epoch in the frame whose window crosses it.
+        const double epoch = crowd::epochOf(time);
+        for (const crowd::FiredEvent& e : cpu) run.beforeEpoch += e.time < epoch && previous < epoch ? 1u : 0u;
         std::vector<Fired> cpuEvents, gpuEvents;
         for (const crowd::FiredEvent& e : cpu) cpuEvents.push_back({e.character, e.clip, e.event, e.time});
         for (const gpu::EventRecord& r : gpu.records)
             gpuEvents.push_back({r.ids.x, r.ids.y, r.ids.z, time - static_cast<double>(r.place.w), glm::vec3(r.place)});
-        compareFrame(crowd, soldier, gpuEvents, cpuEvents, previous, time, comparison);
+        compareFrame(crowd, soldier, gpuEvents, cpuEvents, previous, time, run);
         previous = time;
     }
+    std::printf("[ events ] %zu matched (%zu near a frame's edge, %zu before a replan, %zu in crossfades, %zu before the "
+                "epoch); %zu character-frames out of view, %zu replanned twice in a frame; worst time %.2g s, place "
+                "%.2g m (%.2g m in crossfades)\n",
+                run.matched, run.nearEdge, run.beforeReplan, run.inCrossfade, run.beforeEpoch, run.outOfView,
+                run.replannedTwice, run.worstTime, run.worstPlace, run.worstPlaceInCrossfade);
+    return run;
+}
+
+// 400 soldiers, 240 frames from 62 s (across the epoch at 64 s), GPU animation and culling.
+TEST_F(GpuTest, GpuEventsEqualTheCrowdsEventsForTheCharactersInView) {
+    test::RendererOptions options;
+    options.method = skin::Method::Compute;
+    const OrbitRun run = compareAlongAnOrbit(*context, options, 400, 240, 62.005);
     // Not trivial: many events, some characters out of view, some events fired by the segment a
-    // replan inside the frame ended, some in crossfades; few need the frame beside.
-    EXPECT_GT(cpuTotal, 150u);
-    EXPECT_GT(outOfView, 0u);
-    EXPECT_GT(comparison.beforeReplan, 0u);
-    EXPECT_GT(comparison.inCrossfade, 0u);
-    EXPECT_GT(beforeEpoch, 0u);
-    EXPECT_LE(comparison.nearEdge, cpuTotal / 50);
-    EXPECT_LT(comparison.worstTime, kTimeTolerance);
+    // replan inside the frame ended, some in crossfades, some before the epoch in the frame that
+    // crosses it; few need the frame beside.
+    EXPECT_GT(run.cpuTotal, 150u);
+    EXPECT_GT(run.outOfView, 0u);
+    EXPECT_GT(run.beforeReplan, 0u);
+    EXPECT_GT(run.inCrossfade, 0u);
+    EXPECT_GT(run.beforeEpoch, 0u);
+    EXPECT_LE(run.nearEdge, run.cpuTotal / 50);
+    EXPECT_LT(run.worstTime, kTimeTolerance);
     // Positions: the placement at the event's time on the joint's clip pose, against the CPU's whole
     // animation (1 mm; outside crossfades they differ by float rounding and the quadrature of the path).
     // In a crossfade the GPU takes the firing clip's pose alone (weight >= 1/2): within 10 cm.
-    EXPECT_LT(comparison.worstPlace, 1e-3);
-    EXPECT_LT(comparison.worstPlaceInCrossfade, 0.1);
-    std::printf("[ events ] %zu matched (%zu near a frame's edge, %zu before a replan, %zu in crossfades, %zu before the "
-                "epoch); %zu character-frames out of view, %zu replanned twice in a frame; worst time %.2g s, place %.2g m (%.2g m in crossfades)\n",
-                comparison.matched, comparison.nearEdge, comparison.beforeReplan, comparison.inCrossfade, beforeEpoch,
-                outOfView, replannedTwice, comparison.worstTime, comparison.worstPlace, comparison.worstPlaceInCrossfade);
+    EXPECT_LT(run.worstPlace, 1e-3);
+    EXPECT_LT(run.worstPlaceInCrossfade, 0.1);
+}
+
+// The same with the CPU animation path (the event pass uploads the segments itself) and CPU culling
+// (its in-view words uploaded): 100 soldiers, 60 frames.
+TEST_F(GpuTest, GpuEventsEqualTheCrowdsEventsWithCpuAnimationAndCulling) {
+    test::RendererOptions options;
+    options.method = skin::Method::Compute;
+    options.animation = render::AnimationPath::Cpu;
+    options.cull.mode = render::CullMode::Cpu;
+    const OrbitRun run = compareAlongAnOrbit(*context, options, 100, 60, 10.0);
+    EXPECT_GT(run.cpuTotal, 20u);
+    EXPECT_GT(run.outOfView, 0u);
+    EXPECT_LE(run.nearEdge, run.cpuTotal / 20);
+    EXPECT_LT(run.worstTime, kTimeTolerance);
+    EXPECT_LT(run.worstPlace, 1e-3);
 }
 
 // A buffer of 8 records in a frame where many more fire: exactly 8 written, each one of the CPU's
