@@ -377,13 +377,13 @@ std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
                                              lists_.lodState().size + lists_.shadowStates().size +
                                              lists_.impostorList().size +
                                              lists_.characterDraws().size + cut.candidates + cut.boundary +
-                                             cut.tieBits);
+                                             cut.tieBits + (eventPass_ ? eventPass_->characterBytes() : 0u));
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
     const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
                                              (shadowRaster_ ? shadowRaster_->bytes() : 0u) +
                                              (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms +
-                                             (eventPass_ ? eventPass_->bytes() : 0u));
+                                             (eventPass_ ? eventPass_->bytes() - eventPass_->characterBytes() : 0u));
     return {{"state", state / n},
             {"bones", static_cast<double>(buffers_.bones().size) / n},
             {"mesh slots", meshSlots / n},

@@ -179,10 +179,11 @@ public:
     std::vector<skin::MemoryItem> memory() const;
     // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
     // impostor-list entries, the vs baseline's draw slots (vs only); with a mesh-level cap, the cut's
-    // candidate and boundary entries and tie bit), "bones" (the mesh slots' bone blocks, or a block per
+    // candidate and boundary entries and tie bit; with events, each character's segment start), "bones" (the mesh slots' bone blocks, or a block per
     // character with vs, static and the CPU path: render::BoneBlocks), "mesh slots" (visible lists, draws and the
     // method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas shared
-    // by all), "fixed" (geometry, clip library, shadow map, impostor quads, the cut's size histograms).
+    // by all), "fixed" (geometry, clip library, shadow map, impostor quads, the cut's size histograms, the
+    // event buffer and clip events).
     std::map<std::string, double> memoryPerCharacter() const;
 
 private:

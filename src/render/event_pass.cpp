@@ -168,6 +168,12 @@ VkDeviceSize EventPass::bytes() const {
     return total;
 }
 
+VkDeviceSize EventPass::characterBytes() const {
+    VkDeviceSize total = segmentStarts_.size;
+    for (const gpu::Buffer& b : startStaging_) total += b.size;
+    return total;
+}
+
 std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSlot, double from, std::uint32_t& lost) {
     // The crowd lists whom its last advance replanned (everyone when it entered a new epoch); after
     // more than one advance since the last frame, look at everyone.

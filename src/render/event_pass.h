@@ -51,6 +51,9 @@ public:
     const gpu::Buffer& events() const { return events_; }
     std::uint32_t capacity() const { return capacity_; }
     VkDeviceSize bytes() const;
+    // Of those, what grows with the crowd: the segment starts and their upload (the rest is fixed by
+    // the clips and the capacity, the previous-segment table once the crowd passes the capacity).
+    VkDeviceSize characterBytes() const;
 
 private:
     // What the crowd's last advance changed, staged for this slot: the true starts of the characters'
