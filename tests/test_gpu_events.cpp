@@ -279,3 +279,36 @@ TEST_F(GpuTest, FullEventBufferKeepsItsCapacityAndCountsTheRest) {
 }
 
 }  // namespace
+
+namespace {
+
+// The capacity's bounds, through the public API (memoryNeeded checks settings as the constructor
+// does): 0 and more than 4,000,000 records are refused in one line; with events off it is not read.
+// The memory counts the buffer: 32 bytes a record more for a larger capacity.
+TEST_F(GpuTest, EventCapacityOutOfRangeIsRefusedAndItsBufferCounted) {
+    crowdgpu::GridLayout layout;
+    layout.count = 16;
+    const crowdgpu::Crowd crowd = crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+    crowdgpu::RendererSettings settings;
+    for (const std::uint32_t capacity : {0u, 4000001u}) {
+        settings.eventCapacity = capacity;
+        try {
+            crowdgpu::memoryNeeded(context->physicalDevice, crowd, settings);
+            ADD_FAILURE() << "capacity " << capacity << " accepted";
+        } catch (const crowdgpu::Error& error) {
+            EXPECT_EQ(error.code(), crowdgpu::ErrorCode::InvalidArgument);
+            EXPECT_NE(std::string(error.what()).find("event capacity"), std::string::npos) << error.what();
+        }
+    }
+    settings.events = false;
+    const std::uint64_t off = crowdgpu::memoryNeeded(context->physicalDevice, crowd, settings);
+    settings.events = true;
+    settings.eventCapacity = 1000;
+    const std::uint64_t small = crowdgpu::memoryNeeded(context->physicalDevice, crowd, settings);
+    settings.eventCapacity = 2000;
+    const std::uint64_t large = crowdgpu::memoryNeeded(context->physicalDevice, crowd, settings);
+    EXPECT_GT(small, off);
+    EXPECT_EQ(large - small, 1000u * sizeof(crowdgpu::GpuEvent));
+}
+
+}  // namespace

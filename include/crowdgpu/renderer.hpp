@@ -213,7 +213,7 @@ struct GpuEventHeader {
     std::uint32_t dropped;       // events that fired in view but found the buffer full (not written)
     std::uint32_t capacity;
     std::uint32_t lostSegments;  // characters replanned in the window beyond the previous-segment table (its
-                                 // size: min(crowd, capacity)): their events before the replan are missing
+                                 // size: min(crowd, capacity, 65,536)): their events before the replan are missing
 };
 struct GpuEvent {
     std::uint32_t character;

@@ -78,8 +78,12 @@ gpu::Buffer upload(const gpu::VulkanContext& context, std::vector<T> table, cons
     return gpu::createBufferWithData(context, std::as_bytes(std::span(table)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, what);
 }
 
+// Characters replanned inside one frame's window whose previous segments a frame's table holds: at
+// most the crowd or the event capacity, and never more than 65,536 (6 MiB a table, within every
+// device's storage-buffer range).
+constexpr std::uint32_t kMostPreviousSegments = 65536;
 std::uint32_t previousCapacityFor(const crowd::Crowd& crowd, std::uint32_t capacity) {
-    return std::max(1u, std::min(crowd.size(), capacity));
+    return std::max(1u, std::min({crowd.size(), capacity, kMostPreviousSegments}));
 }
 
 }  // namespace
@@ -208,11 +212,11 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
         for (std::uint32_t c : crowd_.lastChanged()) consider(c);
     } else {
         for (std::uint32_t c = 0; c < crowd_.size(); ++c) consider(c);
-        startCopies_.push_back({0, 0, VkDeviceSize{staged} * sizeof(float)});
+        if (staged > 0) startCopies_.push_back({0, 0, VkDeviceSize{staged} * sizeof(float)});
     }
     if (!startCopies_.empty()) {
-        // The last frames' event passes are done reading the starts this copy overwrites.
-        // (and the last copy is done writing them).
+        // The last frames' event passes are done reading the starts this copy overwrites, and the last
+        // copy is done writing them.
         gpu::memoryBarrier(cmd,
                            {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT},

@@ -35,7 +35,7 @@ inline constexpr std::uint32_t kDefaultEventCapacity = 65536;
 class EventPass {
 public:
     // `capacity`: the most records a frame keeps (the rest are counted as dropped); the table of
-    // previous segments holds min(crowd size, capacity) characters replanned in a frame.
+    // previous segments holds min(crowd size, capacity, 65,536) characters replanned in a frame.
     EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const AnimationPass& animation,
               const CrowdBuffers& buffers, const DrawLists& lists, std::uint32_t framesInFlight, std::uint32_t capacity);
     ~EventPass();
