@@ -87,7 +87,9 @@ void fireSegment(uint c, MotionRecord m, float begin, float end) {
     float from = push.window.x, to = push.window.y;
     float lo = max(from, begin), hi = min(to, end);
     if (!(hi >= lo)) return;
-    uint firstClip = animModels[characters[c].ids.x].info.z;
+    uvec4 model = animModels[characters[c].ids.x].info;
+    if (model.w == 0u) return;  // a model without clips fires nothing (and has no row in clipEvents)
+    uint firstClip = model.z;
     float start = m.timing.x, fade = m.timing.y;
     float first = motionPhase(m, lo - start), last = motionPhase(m, hi - start);
     uint clipFrom = m.clips.x, clipTo = m.clips.y;
