@@ -196,7 +196,14 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
     auto consider = [&](std::uint32_t c) {
         const crowd::Segment& current = crowd_.plans()[c];
         starts[staged] = static_cast<float>(current.start - epoch);
-        if (oneAdvance) startCopies_.push_back({staged * sizeof(float), c * sizeof(float), sizeof(float)});
+        // One copy per run of consecutive characters (the crowd lists them in order; after an epoch,
+        // everyone: one copy).
+        const VkDeviceSize source = VkDeviceSize{staged} * sizeof(float), target = VkDeviceSize{c} * sizeof(float);
+        if (!startCopies_.empty() && startCopies_.back().srcOffset + startCopies_.back().size == source &&
+            startCopies_.back().dstOffset + startCopies_.back().size == target)
+            startCopies_.back().size += sizeof(float);
+        else
+            startCopies_.push_back({source, target, sizeof(float)});
         ++staged;
         // Replanned after `from`: what it did before, from what the crowd still knows
         // (Crowd::knownFrom) to that start, is its previous segment.
@@ -212,7 +219,6 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
         for (std::uint32_t c : crowd_.lastChanged()) consider(c);
     } else {
         for (std::uint32_t c = 0; c < crowd_.size(); ++c) consider(c);
-        if (staged > 0) startCopies_.push_back({0, 0, VkDeviceSize{staged} * sizeof(float)});
     }
     if (!startCopies_.empty()) {
         // The last frames' event passes are done reading the starts this copy overwrites, and the last
