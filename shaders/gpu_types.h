@@ -367,6 +367,50 @@ struct SceneUniforms {
     vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: unused
 };
 
+// ---- Animation events on the GPU (render/event_pass.h, shaders/events.comp.glsl, docs/events.md) ----
+// The clip events of every model, uploaded once: per library clip the range of its events (a uvec2
+// table: first, count), and per event where it falls in the cycle and where its joint is then.
+struct AnimationEvent {
+    vec4 moment;  // x: point in the cycle (event time / clip duration), y: joint (-1: none; exact as a
+                  // float), z: the event's index among its clip's events (exact as a float), w: unused
+    vec4 place;   // xyz: the joint's model-space position at that moment of its clip alone (the clip's
+                  // pose with no placement; 0 without a joint), w: unused
+};
+
+// One event a visible character fired in the frame's window, as the event pass appends it.
+struct EventRecord {
+    uvec4 ids;   // x: character, y: clip (the model's own index), z: event (index among that clip's
+                 // events), w: unused
+    vec4 place;  // xyz: world position, w: how long before the frame's time it fired (s, >= 0: an age)
+};
+
+// The head of the event buffer; the records follow it (16 bytes in). count stops at capacity: an
+// event that finds the buffer full is counted in dropped and written nowhere.
+struct EventHeader {
+    uint count;         // records written (at most capacity)
+    uint dropped;       // events that fired in view but found the buffer full
+    uint capacity;      // records the buffer holds
+    uint lostSegments;  // characters replanned this frame whose previous segment did not fit its table
+                        // (its events before the replan are missing)
+};
+
+// A character's segment before a replan in this frame's window (one per such character, uploaded by
+// the host each frame): its events fire from span.x until span.y, where its current segment starts.
+struct PreviousSegment {
+    MotionRecord motion;
+    vec4 span;  // x: from when the crowd knows it, y: its end (s since the epoch), z, w: unused
+    uvec4 ids;  // x: character, y, z, w: unused
+};
+
+// Push constants of the event pass.
+struct EventPush {
+    uvec4 counts;  // x: items (characters, or previous segments), y: threads in the dispatch (they stride),
+                   // z: 1 = the previous segments' table, 0 = every character's current segment, w: unused
+    vec4 window;   // x: the previous frame's time, y: this frame's (s since the epoch; events at from < t <= to),
+                   // z: the most cycles of a clip one event is looked for over (a longer window keeps its end)
+};
+#define EVENT_MAX_CYCLES 64.0
+
 #ifdef __cplusplus
 }  // namespace gpu
 #endif

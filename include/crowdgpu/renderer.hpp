@@ -141,6 +141,12 @@ struct RendererSettings {
     ShadowRaster shadowRaster = ShadowRaster::Compute;
     std::uint32_t shadowMapSize = 2048;
     std::uint32_t framesInFlight = 2;
+    // Animation events (clip events: footsteps, a glTF clip's own) of the characters in view, written
+    // each frame to FrameOutput::events for the host's own passes (docs/events.md). Costs one pass
+    // after culling (a thread per character, work only where one fires) and a buffer of eventCapacity
+    // 32-byte records (2 MiB); off: neither.
+    bool events = true;
+    std::uint32_t eventCapacity = 65536;  // records a frame keeps (1 to 4,000,000); the rest are counted
     // A renderer of the same models in the same order whose baked impostor atlas this one shares
     // instead of baking its own (it must have completed setup); null: bake when impostors turn on.
     const Renderer* impostorsFrom = nullptr;
@@ -194,10 +200,33 @@ struct FrameOutput {
     VkDeviceSize drawCountOffset = 0;
     std::uint32_t maxDraws = 0;
     VkDeviceSize fadingDrawsOffset = 0, fadingCountOffset = 0;  // lodFade: the fading characters' draws
+    // With events on: the clip events that characters in view fired in (the previous recordCompute's
+    // time, this one's] (nothing on the first frame or when time goes back): a GpuEventHeader at byte
+    // 0, then header.count GpuEvents from eventsOffset, in no particular order. Null with events off.
+    VkBuffer events = VK_NULL_HANDLE;
+    VkDeviceSize eventsOffset = 16;
+    std::uint32_t eventCapacity = 0;
     // Stages and accesses the renderer wrote these with: a host pass reading them needs no barrier of
     // its own when it runs after recordCompute in the same queue (the renderer's own barrier covers
     // vertex input and indirect reads); these are for hosts that read them in compute.
     VkPipelineStageFlags2 writtenBy = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+};
+
+// The event buffer's layout (FrameOutput::events; std430, as the shaders write it).
+struct GpuEventHeader {
+    std::uint32_t count;         // events written (at most capacity)
+    std::uint32_t dropped;       // events that fired in view but found the buffer full (not written)
+    std::uint32_t capacity;
+    std::uint32_t lostSegments;  // characters replanned in the window beyond the previous-segment table (its
+                                 // size: min(crowd, capacity, 65,536)): their events before the replan are missing
+};
+struct GpuEvent {
+    std::uint32_t character;
+    std::uint32_t clip;   // the model's clip (Model::eventName(clip, event) names it)
+    std::uint32_t event;  // index among that clip's events
+    std::uint32_t unused;
+    float position[3];    // world: the event's joint where the character is then (its root without a joint)
+    float age;            // seconds before the frame's time it fired (>= 0)
 };
 
 // Called as each pass ends, outside any rendering pass (timestamps, debug labels).

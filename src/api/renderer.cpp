@@ -1,6 +1,7 @@
 // crowdgpu::Renderer over frame::CrowdRecorder on a borrowed device.
 #include "crowdgpu/renderer.hpp"
 
+#include <cstddef>
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,6 +16,11 @@
 #include "render/scene_pass.h"
 #include "skin/storage_ranges.h"
 
+// The public event layout is the shaders' (gpu_types.h), byte for byte.
+static_assert(sizeof(crowdgpu::GpuEventHeader) == sizeof(gpu::EventHeader) &&
+              offsetof(crowdgpu::GpuEventHeader, capacity) == offsetof(gpu::EventHeader, capacity));
+static_assert(sizeof(crowdgpu::GpuEvent) == sizeof(gpu::EventRecord) &&
+              offsetof(crowdgpu::GpuEvent, position) == offsetof(gpu::EventRecord, place));
 static_assert(crowdgpu::kHorizonColor[0] == render::kSkyColor.x && crowdgpu::kHorizonColor[1] == render::kSkyColor.y &&
                   crowdgpu::kHorizonColor[2] == render::kSkyColor.z,
               "the public horizon colour is the fog's");
@@ -80,6 +86,8 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
         throw Error(ErrorCode::InvalidArgument, "shadow map size must be 1 to 16384 texels");
     if (!(s.meshRasterLimit >= 0.0f && s.meshRasterLimit <= 1e6f))
         throw Error(ErrorCode::InvalidArgument, "the mesh raster limit must lie in [0, 1e6] pixels");
+    if (s.events && !(s.eventCapacity >= 1 && s.eventCapacity <= 4000000))
+        throw Error(ErrorCode::InvalidArgument, "the event capacity must be 1 to 4,000,000 records");
     frame::RecorderOptions o;
     o.target = {s.target.color, s.target.depth, s.target.samples};
     o.method = internalMethod(s.method);
@@ -93,6 +101,8 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
     o.raster = internalRaster(s.raster);
     o.meshRasterLimitPixels = s.meshRasterLimit;
+    o.events = s.events;
+    o.eventCapacity = s.eventCapacity;
     return o;
 }
 
@@ -253,6 +263,8 @@ FrameOutput Renderer::output() const {
     out.maxDraws = o.maxDraws;
     out.fadingDrawsOffset = o.fadingDrawsOffset;
     out.fadingCountOffset = o.fadingCountOffset;
+    out.events = o.events;
+    out.eventCapacity = o.eventCapacity;
     return out;
 }
 

@@ -56,6 +56,9 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
              options.method == skin::Method::VertexShader),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
       animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
+      eventPass_(options.events ? std::make_unique<render::EventPass>(context, crowd, animationPass_, buffers_, lists_,
+                                                                      options.framesInFlight, options.eventCapacity)
+                                : nullptr),
       maxTargetDimension_(options.maxTargetDimension),
       shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
       shadowMap_(context, options.shadowMapSize),
@@ -165,6 +168,12 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
     const bool perCharacterDraws = method_->drawInput() == render::DrawInput::BindPosePerCharacter;
     cullPass_.record(cmd, slot, cullUniforms(view), cull_.mode, method_->fixedLayout(), perCharacterDraws);
     gpu::passDone(passes_, cmd, "cull");
+    if (eventPass_) {
+        // Culling said who is in view; the GPU path uploaded the segments already, the others have not.
+        if (path != render::AnimationPath::Gpu) animationPass_.recordSegmentUpload(cmd, slot);
+        eventPass_->record(cmd, slot, view.time);
+        gpu::passDone(passes_, cmd, "events");
+    }
     if (path == render::AnimationPath::Gpu) {
         animationPass_.recordPalettes(cmd);
         gpu::passDone(passes_, cmd, "palette");
@@ -293,6 +302,10 @@ FrameOutput CrowdRecorder::output() const {
     out.fadingDrawsOffset = VkDeviceSize{lists_.fadingDrawBase()} * sizeof(gpu::DrawIndexedCommand);
     out.fadingCountOffset = offsetof(gpu::DrawTotals, fading);
     out.characters = buffers_.characters().buffer;
+    if (eventPass_) {
+        out.events = eventPass_->events().buffer;
+        out.eventCapacity = eventPass_->capacity();
+    }
     return out;
 }
 
@@ -372,6 +385,7 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"shadow map", shadowMap_.bytes()}};
     if (shadowRaster_) items.push_back({"shadow map depth (compute raster)", shadowRaster_->bytes()});
+    if (eventPass_) items.push_back({"event buffer, clip events, previous segments", eventPass_->bytes()});
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
     if (impostorDraw_) items.push_back({"impostor quad indices and draws", impostorDraw_->bytes()});
     if (impostorRaster_) items.push_back({"visibility buffers and raster split", impostorRaster_->bytes()});
@@ -388,12 +402,13 @@ std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
                                              lists_.lodState().size + lists_.shadowStates().size +
                                              lists_.impostorList().size +
                                              lists_.characterDraws().size + cut.candidates + cut.boundary +
-                                             cut.tieBits);
+                                             cut.tieBits + (eventPass_ ? eventPass_->characterBytes() : 0u));
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
     const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
                                              (shadowRaster_ ? shadowRaster_->bytes() : 0u) +
-                                             (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms);
+                                             (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms +
+                                             (eventPass_ ? eventPass_->bytes() - eventPass_->characterBytes() : 0u));
     return {{"state", state / n},
             {"bones", static_cast<double>(buffers_.bones().size) / n},
             {"mesh slots", meshSlots / n},

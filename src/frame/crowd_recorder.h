@@ -29,6 +29,7 @@
 #include "render/crowd_buffers.h"
 #include "render/cull_pass.h"
 #include "render/draw_lists.h"
+#include "render/event_pass.h"
 #include "render/frame_view.h"
 #include "render/geometry_pool.h"
 #include "render/impostor_atlas.h"
@@ -75,6 +76,10 @@ struct RecorderOptions {
     // Under auto, the largest character (pose sphere's diameter on screen, pixels) whose mesh is drawn in
     // compute (render/mesh_raster.h); 0: none.
     float meshRasterLimitPixels = render::kAutoMeshRasterLimitPixels;
+    // Animation events of the characters in view, into a buffer for the host (render/event_pass.h);
+    // the buffer keeps eventCapacity records a frame.
+    bool events = true;
+    std::uint32_t eventCapacity = render::kDefaultEventCapacity;
     // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
     std::shared_ptr<const render::ImpostorAtlas> atlas;
     // Kept alive by what may outlive the recorder (its atlas, shared with other recorders): the
@@ -109,6 +114,9 @@ struct FrameOutput {
     VkDeviceSize fadingDrawsOffset = 0;
     VkDeviceSize fadingCountOffset = 0;
     VkBuffer characters = VK_NULL_HANDLE;  // CharacterRecord per character (firstInstance names it)
+    // With events on: gpu::EventHeader, then up to eventCapacity gpu::EventRecords from byte 16.
+    VkBuffer events = VK_NULL_HANDLE;
+    std::uint32_t eventCapacity = 0;
 };
 
 class CrowdRecorder {
@@ -168,6 +176,7 @@ public:
     const render::CrowdBuffers& buffers() const { return buffers_; }
     const render::DrawLists& drawLists() const { return lists_; }
     const render::CullPass& cullPass() const { return cullPass_; }
+    const render::EventPass* eventPass() const { return eventPass_.get(); }
     std::shared_ptr<const render::ImpostorAtlas> impostorAtlas() const { return atlas_; }
     const render::CrowdShape& shape() const { return shape_; }
     // What the cull pass gets for this view and the current settings (the CPU reference takes the same).
@@ -178,10 +187,11 @@ public:
     std::vector<skin::MemoryItem> memory() const;
     // The same per character of the crowd, by kind: "state" (record, motion segment, LOD state,
     // impostor-list entries, the vs baseline's draw slots (vs only); with a mesh-level cap, the cut's
-    // candidate and boundary entries and tie bit), "bones" (the mesh slots' bone blocks, or a block per
+    // candidate and boundary entries and tie bit; with events, each character's segment start), "bones" (the mesh slots' bone blocks, or a block per
     // character with vs, static and the CPU path: render::BoneBlocks), "mesh slots" (visible lists, draws and the
     // method's skinned vertices, sized for the mesh-level capacity), "atlas" (the impostor atlas shared
-    // by all), "fixed" (geometry, clip library, shadow map, impostor quads, the cut's size histograms).
+    // by all), "fixed" (geometry, clip library, shadow map, impostor quads, the cut's size histograms, the
+    // event buffer and clip events).
     std::map<std::string, double> memoryPerCharacter() const;
 
 private:
@@ -212,6 +222,7 @@ private:
     render::DrawLists lists_;
     render::CullPass cullPass_;
     render::AnimationPass animationPass_;
+    std::unique_ptr<render::EventPass> eventPass_;  // with events on
     std::uint32_t maxTargetDimension_;
     render::CrowdShape shape_;
     render::ShadowMap shadowMap_;

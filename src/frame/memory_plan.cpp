@@ -71,6 +71,9 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                   {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
     if (options.shadowRaster == render::ShadowRasterPath::Compute)
         plan.items.push_back({"shadow map depth (compute raster)", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4});
+    if (options.events)
+        plan.items.push_back({"event buffer, clip events, previous segments",
+                              render::EventPass::bytesFor(crowd, options.eventCapacity, options.framesInFlight)});
     if (options.cull.impostors) {
         std::vector<gpu::ModelRecord> records(crowd.models().size());
         plan.items.push_back(

@@ -48,5 +48,10 @@ static_assert(sizeof(AnimationJoint) == 96 && offsetof(AnimationJoint, inverseBi
 static_assert(sizeof(AnimationClip) == 32 && sizeof(AnimationTrack) == 16);
 static_assert(sizeof(MotionRecord) == 64 && offsetof(MotionRecord, clips) == 48);
 static_assert(sizeof(PalettePush) == 16 && sizeof(MotionPush) == 32);
+// Events: the records follow the 16-byte header in one buffer (shaders/events.comp.glsl).
+static_assert(sizeof(AnimationEvent) == 32 && sizeof(EventRecord) == 32 && offsetof(EventRecord, place) == 16);
+static_assert(sizeof(EventHeader) == 16 && offsetof(EventHeader, capacity) == 8);
+static_assert(sizeof(PreviousSegment) == 96 && offsetof(PreviousSegment, span) == 64 && offsetof(PreviousSegment, ids) == 80);
+static_assert(sizeof(EventPush) == 32);
 
 }  // namespace gpu

@@ -46,6 +46,16 @@ public:
     // The bones were reallocated (CrowdBuffers::setBoneBlocks): the palette pass writes the new buffer.
     void rebindBones(const CrowdBuffers& buffers);
 
+    // Uploads the segments the crowd changed since this pass last looked, without the motion pass (the
+    // event pass reads them on the CPU animation path too). recordMotion does this first.
+    void recordSegmentUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) { uploadSegments(cmd, frameSlot); }
+
+    // The flattened clip library's tables on the device (anim::ClipLibrary's, in its order), and each
+    // character's current motion segment: what the event pass reads beside the motion pass.
+    enum class Table : std::uint32_t { Models = 0, Joints, Clips, Tracks, KeyTimes, KeyValues, RootSamples };
+    const gpu::Buffer& libraryBuffer(Table table) const { return library_[static_cast<std::uint32_t>(table)]; }
+    const gpu::Buffer& motions() const { return motions_; }
+
     // Device bytes: the library (once per crowd) and the segments (64 per character).
     std::uint64_t libraryBytes() const { return libraryBytes_; }
     std::uint64_t segmentBytes() const { return motions_.size; }

@@ -156,6 +156,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.impostorBlend = cull.impostorBlend;
     settings.raster = cull.raster;
     settings.meshRasterLimit = cull.meshRasterLimit;
+    settings.events = cull.events;
     return settings;
 }
 

@@ -36,6 +36,8 @@ usage: crowd-render [options]
   --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
   --impostor-blend on|off impostors blend the two nearest views and animation frames; off: the nearest
                           atlas cell, one texture fetch instead of four (default on)
+  --events on|off         the GPU event buffer: clip events (footsteps) of the characters in view,
+                          found by a pass after culling (default on; docs/events.md)
   --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame; beyond N, the
                           smallest on screen are drawn as impostors; sizes the skinned-vertex buffers
                           (default 65536)
@@ -224,6 +226,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         }
         else if (flag == "--lod-fade") options.cull.lodFade = parseOnOff(flag, next());
         else if (flag == "--impostor-blend") options.cull.impostorBlend = parseOnOff(flag, next());
+        else if (flag == "--events") options.cull.events = parseOnOff(flag, next());
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
         else if (flag == "--raster") options.cull.raster = parseRaster(flag, next());
         else if (flag == "--mesh-raster-limit") options.cull.meshRasterLimit = parseNumber(flag, next(), 0.0f, 1e6f);

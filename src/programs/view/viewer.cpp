@@ -50,7 +50,8 @@ Viewer::Viewer(const ViewerOptions& options)
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
       scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
-             options.render.meshCapacity, options.render.samples, swapchain_.extent()) {
+             options.render.meshCapacity, options.render.samples, swapchain_.extent()),
+      markers_(context_, scene_.renderer().library().settings().framesInFlight) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
     scene_.setAnimation(options.render.animation, swapchain_.extent());
     controls_.scenePath = options.render.camera != app::CameraPath::Framed;
@@ -100,6 +101,11 @@ int Viewer::run() {
             scene_.renderer().camera = app::cameraOnPath(options_.render.camera, app::crowdShape(scene_.crowd()),
                                                             static_cast<float>(extent.width) / extent.height, time);
         }
+        if (ui_) {
+            // The footstep markers over this frame's view, then the panel's frame is complete.
+            markers_.draw(app::frameView(scene_.renderer().camera, swapchain_.extent(), time), time);
+            ui_->endFrame();
+        }
         const bool lastScripted = options_.scripted && frame + 1 == options_.render.frames;
         if (!drawFrame(time, requests_.screenshot || (lastScripted && !options_.screenshot.empty()))) {
             swapchainStale_ = true;  // out of date before anything was drawn: recreate, draw this frame again
@@ -137,6 +143,8 @@ bool Viewer::drawFrame(double time, bool screenshot) {
     hooks.waitSemaphore = frame->acquired;
     hooks.signalSemaphore = frame->rendered;
     hooks.recordAfterScene = [&](VkCommandBuffer cmd, VkImage scene, VkExtent2D sceneExtent) {
+        // The renderer wrote this frame's events in recordCompute: copy them for the markers.
+        markers_.recordCopy(cmd, scene_.renderer().library().output(), time);
         SwapchainImage image{frame->image, swapchain_.extent()};
         blitScene(cmd, scene, sceneExtent, image);
         if (ui_) {
@@ -147,9 +155,11 @@ bool Viewer::drawFrame(double time, bool screenshot) {
         prepareForPresent(cmd, image);
     };
     scene_.renderer().renderFrame(time, &hooks);
+    markers_.collectFinished();  // renderFrame waited for the frame whose slot it took
     if (!swapchain_.present(*frame)) swapchainStale_ = true;  // drawn and shown; recreate before the next
     if (shot) {
         scene_.renderer().finish();  // the copy is done once the frame's fence has signalled
+        markers_.collectAll();
         writeScreenshot(shot->pixels());
     }
     return true;
@@ -179,7 +189,7 @@ void Viewer::buildUi() {
     if (!ui_) return;
     ui_->beginFrame();
     if (controls_.showPanel) requests_ = panel_.draw(panelState());
-    ui_->endFrame();
+    // ImGui's frame ends in run(), once the frame's view is known (the markers are drawn in it).
 }
 
 void Viewer::handleKeys(const std::vector<int>& keys) {
@@ -242,6 +252,7 @@ void Viewer::apply(const PanelRequests& requests) {
 
 void Viewer::rebuild(const app::SceneOptions& scene) {
     scene_.rebuild(scene, swapchain_.extent());
+    markers_.clear();
     history_.clear();
     frameHome(true);
     maxCharacters_ = scene_.maxCharacters(swapchain_.extent());

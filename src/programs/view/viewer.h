@@ -11,6 +11,7 @@
 #include "view/camera_controller.h"
 #include "view/camera_input.h"
 #include "view/crowd_scene.h"
+#include "view/event_markers.h"
 #include "view/frame_history.h"
 #include "view/panel.h"
 #include "view/swapchain.h"
@@ -61,6 +62,7 @@ private:
     app::HostDevice context_;
     Swapchain swapchain_;
     CrowdScene scene_;
+    EventMarkers markers_;  // dust puffs at the footsteps of the renderer's event buffer
     std::unique_ptr<UiPass> ui_;
     Panel panel_;
     CameraController camera_;
