@@ -24,6 +24,7 @@ std::string inFlagWords(std::string message) {
 crowdgpu::Model loadNamed(const std::string& name, std::uint32_t seed, const std::string& assetRoot) {
     if (name == "soldier") return crowdgpu::Model::soldier(seed);
     if (name == "horse") return crowdgpu::Model::horse(seed);
+    if (name == "cavalry") return crowdgpu::Model::cavalry(seed);
     std::error_code error;
     const std::string extension = std::filesystem::path(name).extension().string();
     if (extension == ".gltf" || extension == ".glb" || std::filesystem::is_regular_file(name, error)) {
@@ -33,7 +34,7 @@ crowdgpu::Model loadNamed(const std::string& name, std::uint32_t seed, const std
             throw Error(inFlagWords(e.what()));
         }
     }
-    throw Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
+    throw Error("--model: unknown model '" + name + "' (soldier, horse, cavalry, or a .gltf/.glb file)");
 }
 
 // The clip's index, -1 for "" (the default clip).

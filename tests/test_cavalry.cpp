@@ -1,0 +1,156 @@
+// Cavalry (docs/cavalry.md): a rider seated on a mount's saddle joint as one character. The mount
+// without a saddle is one clear error; the mounted horse moves exactly as the horse alone; the rider's
+// hips stay on the saddle through a walk -> gallop crossfade (Crowd::jointWorld, the CPU path the GPU
+// matches). The GPU skinning of the mounted model against the CPU reference is in test_gpu_skinning.cpp.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "api/api_data.h"
+#include "crowdgpu/crowd.hpp"
+#include "crowdgpu/crowdgpu.h"
+#include "crowdgpu/error.hpp"
+#include "crowdgpu/model.hpp"
+
+namespace {
+
+glm::dvec3 apply(const float rows[12], const glm::dvec3& p) {
+    glm::dvec3 r;
+    for (int i = 0; i < 3; ++i) r[i] = rows[4 * i] * p.x + rows[4 * i + 1] * p.y + rows[4 * i + 2] * p.z + rows[4 * i + 3];
+    return r;
+}
+glm::dvec3 column(const float rows[12], int c) { return {rows[c], rows[4 + c], rows[8 + c]}; }
+
+std::uint32_t joint(const crowdgpu::Model& model, const std::string& name) {
+    const std::int32_t j = model.findJoint(name);
+    EXPECT_GE(j, 0) << model.name() << " has no joint " << name;
+    return static_cast<std::uint32_t>(std::max(j, 0));
+}
+
+}  // namespace
+
+TEST(Cavalry, AMountWithoutTheSaddleJointIsOneClearError) {
+    const crowdgpu::Model soldier = crowdgpu::Model::soldier(1), horse = crowdgpu::Model::horse(1);
+    auto failure = [&](const crowdgpu::Model& mount, const std::string& saddle) -> std::string {
+        try {
+            crowdgpu::Model::mounted(mount, soldier, saddle);
+        } catch (const crowdgpu::Error& e) {
+            EXPECT_EQ(e.code(), crowdgpu::ErrorCode::InvalidArgument);
+            return e.what();
+        }
+        return "no error";
+    };
+    EXPECT_EQ(failure(soldier, "saddle"), "soldier: no joint 'saddle' to seat a rider on (a mount needs one)");
+    EXPECT_EQ(failure(horse, "howdah"), "horse: no joint 'howdah' to seat a rider on (a mount needs one)");
+    EXPECT_EQ(crowdgpu::Model::mounted(horse, soldier).name(), "soldier on horse");
+
+    // The C API: the same message, its code, and no model handed out.
+    crowdgpu_model cHorse = nullptr, cSoldier = nullptr, pair = nullptr;
+    ASSERT_EQ(crowdgpu_model_horse(1, &cHorse), CROWDGPU_OK);
+    ASSERT_EQ(crowdgpu_model_soldier(1, &cSoldier), CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_mounted(cSoldier, cSoldier, nullptr, &pair), CROWDGPU_ERROR_INVALID_ARGUMENT);
+    EXPECT_STREQ(crowdgpu_last_error(), "soldier: no joint 'saddle' to seat a rider on (a mount needs one)");
+    EXPECT_EQ(pair, nullptr);
+    ASSERT_EQ(crowdgpu_model_mounted(cHorse, cSoldier, "saddle", &pair), CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_clip_count(pair), 2u);
+    crowdgpu_model_destroy(pair);
+    crowdgpu_model_destroy(cSoldier);
+    crowdgpu_model_destroy(cHorse);
+}
+
+TEST(Cavalry, TheMountedModelIsTheHorseAndTheSoldierWithTheHorsesClips) {
+    const crowdgpu::Model soldier = crowdgpu::Model::soldier(1), horse = crowdgpu::Model::horse(1);
+    const crowdgpu::Model cavalry = crowdgpu::Model::cavalry(1);
+    EXPECT_EQ(cavalry.name(), "cavalry");
+    EXPECT_EQ(cavalry.jointCount(), horse.jointCount() + soldier.jointCount());
+    EXPECT_EQ(cavalry.vertexCount(), horse.vertexCount() + soldier.vertexCount());
+    EXPECT_EQ(cavalry.triangleCount(), horse.triangleCount() + soldier.triangleCount());
+    ASSERT_EQ(cavalry.clipCount(), horse.clipCount());
+    for (std::uint32_t c = 0; c < horse.clipCount(); ++c) {
+        EXPECT_EQ(cavalry.clipName(c), horse.clipName(c));
+        EXPECT_EQ(cavalry.clipDuration(c), horse.clipDuration(c));
+    }
+    // The rider's joints are the soldier's, prefixed, its root under the saddle.
+    const model::SkinnedModel& m = cavalry.data()->model;
+    const std::uint32_t hips = joint(cavalry, "rider_hips"), saddle = joint(cavalry, "saddle");
+    EXPECT_EQ(m.skeleton.parents[hips], static_cast<std::int32_t>(saddle));
+    EXPECT_GE(cavalry.findJoint("rider_hand_r"), 0);
+    EXPECT_GE(cavalry.findJoint("head"), 0) << "the horse's joints keep their names";
+    EXPECT_EQ(m.materialColors.size(), horse.data()->model.materialColors.size() + soldier.data()->model.materialColors.size());
+    // Taller than either: the soldier sits on top of the horse's back.
+    EXPECT_GT(cavalry.height(), horse.height() + 0.3f);
+}
+
+// A joint's position in its character's own frame (where stateAt places it, turned back by its heading).
+glm::dvec3 inBodyFrame(const crowdgpu::Crowd& crowd, std::uint32_t joint, double t) {
+    float rows[12];
+    crowd.jointWorld(0, joint, t, rows);
+    const crowdgpu::CharacterState s = crowd.stateAt(0, t);
+    const glm::dvec3 d = column(rows, 3) - glm::dvec3(s.position[0], s.position[1], s.position[2]);
+    const double c = std::cos(s.heading), sn = std::sin(s.heading);
+    return {c * d.x - sn * d.z, d.y, sn * d.x + c * d.z};
+}
+
+TEST(Cavalry, TheMountedHorseMovesExactlyAsTheHorseAlone) {
+    // Every horse joint of a cavalryman, mid-crossfade and galloping, is the lone horse's joint in the
+    // body's frame; and both travel at the same speed (root motion is measured from the hooves).
+    const crowdgpu::Model horse = crowdgpu::Model::horse(1), cavalry = crowdgpu::Model::cavalry(1);
+    crowdgpu::Character c;
+    c.clip = static_cast<std::uint32_t>(horse.findClip("walk"));
+    c.position[0] = 3.0f, c.heading = 0.7f, c.phase = 0.23f;
+    crowdgpu::Crowd lone({horse}, {c}), mounted({cavalry}, {c});
+    const auto gallop = horse.findClip("gallop");
+    lone.play(0, gallop, 0.5, 0.4f), mounted.play(0, gallop, 0.5, 0.4f);
+    double worst = 0.0;
+    for (double t = 0.0; t <= 1.5; t += 1.0 / 30.0) {
+        lone.advanceTo(t), mounted.advanceTo(t);
+        for (std::uint32_t j = 0; j < horse.jointCount(); ++j)
+            worst = std::max(worst, glm::length(inBodyFrame(lone, j, t) - inBodyFrame(mounted, j, t)));
+    }
+    EXPECT_LE(worst, 1e-5);
+    const crowdgpu::CharacterState a = lone.stateAt(0, 1.5), b = mounted.stateAt(0, 1.5);
+    const double apart = std::hypot(a.position[0] - b.position[0], a.position[2] - b.position[2]);
+    EXPECT_LE(apart, 1e-4) << "the mounted horse travels as the horse alone";
+}
+
+// The test: through a walk -> gallop crossfade, sampled at 60 fps, the rider's hips stay within
+// 0.12 m of their seat (where the hips sit at rest, carried by the saddle joint), sit between 0.10 and
+// 0.30 m above the saddle (not sunk into the horse, not floating), and at a steady walk sit exactly in
+// the seat (within 1 cm). At the gallop the rider is out of the saddle, the legs taking up the horse's
+// bob: the hips leave their seat by at least 3 cm at some moment, so the gallop's seat really plays.
+TEST(Cavalry, TheRidersHipsStayOnTheSaddleThroughAWalkToGallopCrossfade) {
+    const crowdgpu::Model cavalry = crowdgpu::Model::cavalry(1);
+    const model::SkinnedModel& m = cavalry.data()->model;
+    const std::uint32_t hips = joint(cavalry, "rider_hips"), saddle = joint(cavalry, "saddle");
+    const glm::dvec3 seatFromSaddle = m.skeleton.restPose[hips].translation;
+    ASSERT_GT(seatFromSaddle.y, 0.1);
+
+    crowdgpu::Character c;
+    c.clip = static_cast<std::uint32_t>(cavalry.findClip("walk"));
+    crowdgpu::Crowd crowd({cavalry}, {c}, crowdgpu::Behaviour::InPlace);
+    const double fadeAt = 2.0, fade = 0.6;
+    crowd.play(0, cavalry.findClip("gallop"), fadeAt, static_cast<float>(fade));
+    double walkWorst = 0.0, worst = 0.0, lowest = 1e9, highest = -1e9, gallopMost = 0.0;
+    for (int frame = 0; frame <= 4 * 60; ++frame) {
+        const double t = frame / 60.0;
+        crowd.advanceTo(t);
+        float saddleRows[12], hipsRows[12];
+        crowd.jointWorld(0, saddle, t, saddleRows);
+        crowd.jointWorld(0, hips, t, hipsRows);
+        const glm::dvec3 hipsAt = column(hipsRows, 3), saddleAt = column(saddleRows, 3);
+        const double fromSeat = glm::length(hipsAt - apply(saddleRows, seatFromSaddle));
+        // Height above the saddle along its own up axis.
+        const double above = glm::dot(hipsAt - saddleAt, glm::normalize(column(saddleRows, 1)));
+        worst = std::max(worst, fromSeat);
+        lowest = std::min(lowest, above), highest = std::max(highest, above);
+        if (t < fadeAt) walkWorst = std::max(walkWorst, fromSeat);
+        if (t > fadeAt + fade) gallopMost = std::max(gallopMost, fromSeat);
+    }
+    EXPECT_LE(worst, 0.12);
+    EXPECT_LE(walkWorst, 0.01);
+    EXPECT_GE(gallopMost, 0.03);
+    EXPECT_GE(lowest, 0.10);
+    EXPECT_LE(highest, 0.30);
+    std::printf("hips from seat: walk %.4f m, worst %.4f m, gallop most %.4f m; above the saddle %.3f..%.3f m\n",
+                walkWorst, worst, gallopMost, lowest, highest);
+}
