@@ -154,3 +154,38 @@ TEST(Cavalry, TheRidersHipsStayOnTheSaddleThroughAWalkToGallopCrossfade) {
     std::printf("hips from seat: walk %.4f m, worst %.4f m, gallop most %.4f m; above the saddle %.3f..%.3f m\n",
                 walkWorst, worst, gallopMost, lowest, highest);
 }
+
+// The rider's mesh sits on the horse's back, neither sunk into it nor floating, at every phase of both
+// gaits (Model::pose: the double-precision CPU skinning the GPU methods match): the lowest vertex the
+// rider's hips carry is within 4 cm of the top of the horse's back beneath it at a walk, and rises out
+// of the saddle by at most 12 cm at a gallop.
+TEST(Cavalry, TheRiderSitsOnTheHorsesBackNeitherSunkNorFloating) {
+    const crowdgpu::Model cavalry = crowdgpu::Model::cavalry(1), horse = crowdgpu::Model::horse(1);
+    const model::SkinnedModel& m = cavalry.data()->model;
+    const std::uint32_t hips = joint(cavalry, "rider_hips");
+    for (const char* clipName : {"walk", "gallop"}) {
+        const auto clip = static_cast<std::uint32_t>(cavalry.findClip(clipName));
+        double lowestGap = 1e9, highestGap = -1e9;
+        for (int k = 0; k < 12; ++k) {
+            const std::vector<crowdgpu::Model::PosedVertex> posed = cavalry.pose(clip, cavalry.clipDuration(clip) * k / 12.0f);
+            // The seat: the lowest vertex mostly carried by the rider's hips.
+            std::size_t seat = 0;
+            double seatY = 1e9;
+            for (std::size_t v = 0; v < posed.size(); ++v)
+                if (m.vertices[v].joints.x == hips && m.vertices[v].weights.x >= 0.5f && posed[v].position[1] < seatY)
+                    seat = v, seatY = posed[v].position[1];
+            // The horse's back beneath it: its highest vertex within 10 cm across.
+            double backY = -1e9;
+            for (std::size_t v = 0; v < posed.size(); ++v) {
+                if (m.vertices[v].joints.x >= horse.jointCount()) continue;
+                if (std::hypot(posed[v].position[0] - posed[seat].position[0], posed[v].position[2] - posed[seat].position[2]) < 0.10)
+                    backY = std::max(backY, posed[v].position[1]);
+            }
+            ASSERT_GT(backY, 1.0) << "the horse's back is under the seat";
+            lowestGap = std::min(lowestGap, seatY - backY), highestGap = std::max(highestGap, seatY - backY);
+        }
+        std::printf("%s: seat above the horse's back by %.3f..%.3f m\n", clipName, lowestGap, highestGap);
+        EXPECT_GE(lowestGap, -0.04) << clipName << ": sunk into the horse";
+        EXPECT_LE(highestGap, std::string(clipName) == "walk" ? 0.04 : 0.12) << clipName << ": floating";
+    }
+}

@@ -1,6 +1,6 @@
 #pragma once
 // The scenes every program knows by name (--scene): the paper's Fig. 3, 4 and 5, a mixed crowd, and
-// a stress test, and two living crowds (march, mill); each sets the crowd, what it does, culling, LOD
+// a stress test, and three living crowds (march, mill, cavalry); each sets the crowd, what it does, culling, LOD
 // and a camera path. Flags given beside --scene
 // override its settings.
 #include <cstdint>
