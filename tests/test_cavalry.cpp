@@ -189,3 +189,33 @@ TEST(Cavalry, TheRiderSitsOnTheHorsesBackNeitherSunkNorFloating) {
         EXPECT_LE(highestGap, std::string(clipName) == "walk" ? 0.04 : 0.12) << clipName << ": floating";
     }
 }
+
+// The behaviours' gaits (crowd/gaits.h) are the horse's for the pair: it walks with "walk" and runs with
+// "gallop", as the lone horse, and cavalrymen march beside horses in step, as far, turning together.
+TEST(Cavalry, TheBehavioursPickTheHorsesGaitsForThePair) {
+    const crowdgpu::Model horse = crowdgpu::Model::horse(1), cavalry = crowdgpu::Model::cavalry(1);
+    // A formation of two cavalrymen and two horses, side by side, in step.
+    std::vector<crowdgpu::Character> formation(4);
+    for (std::uint32_t c = 0; c < 4; ++c) {
+        formation[c].model = c % 2;
+        formation[c].clip = static_cast<std::uint32_t>(horse.findClip("walk"));
+        formation[c].position[0] = 4.0f * static_cast<float>(c);
+    }
+    crowdgpu::Crowd march({cavalry, horse}, formation, crowdgpu::Behaviour::March);
+    const crowd::Crowd& inner = march.data().crowd();
+    for (std::uint32_t m = 0; m < 2; ++m) {
+        EXPECT_EQ(inner.gaits(m).walk, horse.findClip("walk"));
+        EXPECT_EQ(inner.gaits(m).run, horse.findClip("gallop"));
+    }
+    // Marching, the cavalrymen keep the horses' step and place: the same phase, the same way come.
+    for (double t : {0.5, 3.0, 12.0, 30.0}) {
+        march.advanceTo(t);
+        const crowdgpu::CharacterState horseState = march.stateAt(1, t);
+        for (std::uint32_t c : {0u, 2u}) {
+            const crowdgpu::CharacterState s = march.stateAt(c, t);
+            EXPECT_NEAR(s.phase, horseState.phase, 1e-4) << "character " << c << " at " << t << " s";
+            EXPECT_NEAR(s.position[2], horseState.position[2], 1e-3) << "character " << c << " at " << t << " s";
+            EXPECT_NEAR(s.heading, horseState.heading, 1e-4) << "character " << c << " at " << t << " s";
+        }
+    }
+}
