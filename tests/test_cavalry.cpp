@@ -3,6 +3,7 @@
 // hips stay on the saddle through a walk -> gallop crossfade (Crowd::jointWorld, the CPU path the GPU
 // matches). The GPU skinning of the mounted model against the CPU reference is in test_gpu_skinning.cpp.
 #include <cmath>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
@@ -217,5 +218,47 @@ TEST(Cavalry, TheBehavioursPickTheHorsesGaitsForThePair) {
             EXPECT_NEAR(s.position[2], horseState.position[2], 1e-3) << "character " << c << " at " << t << " s";
             EXPECT_NEAR(s.heading, horseState.heading, 1e-4) << "character " << c << " at " << t << " s";
         }
+    }
+}
+
+// A glTF rider (CesiumMan, ../shared/assets; skipped when absent) on the built-in horse: its joints are
+// not the soldier's, so it rides in its rest pose with a note; its rest pose (its scene's node above the
+// skeleton folded in) is the lone model's moved by one translation, which puts its root joint straight
+// above the saddle. A glTF mount without the joint (the Fox) is the one clear error.
+TEST(Cavalry, AGltfRiderRidesInItsRestPoseAndAGltfMountNeedsTheJoint) {
+    const std::filesystem::path cesium = std::filesystem::path(CROWD_SHARED_ASSETS_DIR) / "cesium-man/CesiumMan.glb";
+    const std::filesystem::path fox = std::filesystem::path(CROWD_SHARED_ASSETS_DIR) / "fox/Fox.glb";
+    if (!std::filesystem::exists(cesium) || !std::filesystem::exists(fox))
+        GTEST_SKIP() << "shared assets not present (see ../shared/assets/INVENTORY.md)";
+    const crowdgpu::Model horse = crowdgpu::Model::horse(1), rider = crowdgpu::Model::fromGltf(cesium.string());
+    const crowdgpu::Model pair = crowdgpu::Model::mounted(horse, rider);
+    ASSERT_FALSE(pair.notes().empty());
+    EXPECT_NE(pair.notes().back().find("rides in its rest pose"), std::string::npos) << pair.notes().back();
+    EXPECT_EQ(pair.vertexCount(), horse.vertexCount() + rider.vertexCount());
+
+    // Rest poses (a clip past the last): the rider's part of the pair against the lone rider, as bounds.
+    auto bounds = [](const std::vector<crowdgpu::Model::PosedVertex>& posed, auto keep) {
+        glm::dvec3 lo(1e30), hi(-1e30);
+        for (std::size_t v = 0; v < posed.size(); ++v) {
+            if (!keep(v)) continue;
+            const glm::dvec3 p(posed[v].position[0], posed[v].position[1], posed[v].position[2]);
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
+        return std::pair{lo, hi};
+    };
+    const model::SkinnedModel& m = pair.data()->model;
+    const auto [pairLo, pairHi] = bounds(pair.pose(pair.clipCount(), 0.0f),
+                                         [&](std::size_t v) { return m.vertices[v].joints.x >= horse.jointCount(); });
+    const auto [aloneLo, aloneHi] = bounds(rider.pose(rider.clipCount(), 0.0f), [](std::size_t) { return true; });
+    const glm::dvec3 shift = pairLo - aloneLo;
+    EXPECT_LE(glm::length(pairHi - aloneHi - shift), 1e-4) << "moved by one translation";
+    EXPECT_GT(glm::length(shift), 0.5) << "and moved up onto the horse";
+
+    try {
+        crowdgpu::Model::mounted(crowdgpu::Model::fromGltf(fox.string()), rider);
+        ADD_FAILURE() << "the Fox has no saddle joint";
+    } catch (const crowdgpu::Error& e) {
+        EXPECT_EQ(e.code(), crowdgpu::ErrorCode::InvalidArgument);
+        EXPECT_NE(std::string(e.what()).find("no joint 'saddle'"), std::string::npos) << e.what();
     }
 }
