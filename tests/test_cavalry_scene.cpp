@@ -4,10 +4,12 @@
 // horse alone, test_cavalry.cpp): every pixel that differs must lie where the CPU projects a rider
 // (its mesh skinned on the CPU and projected), and most of the riders' pixels must differ.
 #include <cmath>
+#include <set>
 
 #include <gtest/gtest.h>
 
 #include "app/crowd_app.h"
+#include "crowdgpu/error.hpp"
 #include "app/scene_presets.h"
 #include "crowd/crowd.h"
 #include "skin/cpu_skinning.h"
@@ -39,8 +41,9 @@ Frame renderMarch(const gpu::VulkanContext& context, crowd::Crowd& crowd) {
     // its horse differs from the lone horse's at levels 1 and 2.
     options.cull.lod = false;
     test::TestRenderer renderer(context, crowd, options);
-    renderer.camera.eye = {0.0f, 22.0f, 26.0f};
-    renderer.camera.target = {0.0f, 0.5f, 3.0f};
+    // From the column's right, high up: its 2 x 8 ranks, 4 m along their march, fill the picture.
+    renderer.camera.eye = {26.0f, 24.0f, 4.0f};
+    renderer.camera.target = {0.0f, 0.5f, 4.0f};
     renderer.renderFrame(kTime);
     return {renderer.readback(), test::internalCamera(renderer.camera).viewProjection(float(kWidth) / kHeight)};
 }
@@ -66,6 +69,7 @@ TEST_F(GpuTest, CavalrySceneDrawsItsRidersWhereTheCpuPutsThem) {
     layout.count = 16;
     layout.weights = {entries[0].second, entries[1].second};
     layout.formation = true;
+    layout.depthRatio = preset.depthRatio;
     crowd::BehaviourSettings march;
     march.kind = crowd::Behaviour::March;
     const std::vector<const model::SkinnedModel*> mounted = {&cavalry, &second}, unmounted = {&horse, &second};
@@ -134,5 +138,44 @@ TEST_F(GpuTest, CavalrySceneDrawsItsRidersWhereTheCpuPutsThem) {
     if (outside != 0 || HasFailure()) {
         app::writePng(test::artifactPath("cavalry-riders.png"), riders.image);
         app::writePng(test::artifactPath("cavalry-horses.png"), horses.image);
+    }
+}
+
+// The scene's crowd is a column on the march: four times as many ranks deep (z, the way it marches) as
+// abreast, riders and foot soldiers 3:1, as the programs build it from the preset.
+TEST(CavalryScene, IsAColumnOfRidersAndFootSoldiersOnTheMarch) {
+    const app::ScenePreset& preset = app::findScenePreset("cavalry");
+    EXPECT_EQ(preset.depthRatio, 4.0f);
+    app::SceneOptions scene;
+    scene.model = preset.models;
+    scene.count = preset.count;
+    scene.behaviour = preset.behaviour;
+    scene.depthRatio = preset.depthRatio;
+    const crowdgpu::Crowd crowd = app::buildCrowd(app::loadModels(scene.model, 1), scene);
+    ASSERT_EQ(crowd.size(), 1024u);
+    std::set<float> xs, zs;
+    std::uint32_t riders = 0;
+    for (std::uint32_t c = 0; c < crowd.size(); ++c) {
+        const crowdgpu::Character character = crowd.character(c);
+        xs.insert(character.position[0]), zs.insert(character.position[2]);
+        riders += character.model == 0;
+    }
+    EXPECT_EQ(xs.size(), 16u) << "abreast";
+    EXPECT_EQ(zs.size(), 64u) << "ranks deep";
+    EXPECT_NEAR(riders / 1024.0, 0.75, 0.05) << "riders and foot soldiers 3:1";
+}
+
+TEST(CavalryScene, AGridsDepthRatioMustBePositive) {
+    for (float bad : {0.0f, -1.0f, std::nanf(""), INFINITY}) {
+        crowdgpu::GridLayout layout;
+        layout.count = 4;
+        layout.depthRatio = bad;
+        try {
+            crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+            ADD_FAILURE() << "depthRatio " << bad << " accepted";
+        } catch (const crowdgpu::Error& e) {
+            EXPECT_EQ(e.code(), crowdgpu::ErrorCode::InvalidArgument);
+            EXPECT_NE(std::string(e.what()).find("depthRatio"), std::string::npos) << e.what();
+        }
     }
 }

@@ -130,6 +130,7 @@ crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene)
     }
     const bool living = scene.behaviour != crowdgpu::Behaviour::InPlace;
     layout.formation = scene.behaviour == crowdgpu::Behaviour::March;
+    layout.depthRatio = scene.depthRatio;
     layout.scaleVariation = living ? 0.08f : 0.0f;
     layout.tintVariation = living ? 0.12f : 0.0f;
     return crowdgpu::Crowd::grid(models.models, layout, scene.behaviour);

@@ -168,6 +168,7 @@ void applyPreset(const ScenePreset& preset, RenderOptions& options) {
     options.cull.mode = preset.cull;
     options.camera = preset.camera;
     options.scene.behaviour = preset.behaviour;
+    options.scene.depthRatio = preset.depthRatio;
 }
 
 // --scene first, wherever it stands, so that every other flag overrides the preset.

@@ -23,6 +23,7 @@ struct ScenePreset {
     crowdgpu::Culling cull;
     app::CameraPath camera;
     crowdgpu::Behaviour behaviour = crowdgpu::Behaviour::InPlace;
+    float depthRatio = 1.0f;  // the grid's rows over columns: 1 a square, more a column (crowdgpu::GridLayout)
 };
 
 std::vector<ScenePreset> scenePresets();
