@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The cavalry scene's frame rate on a lent GPU machine (issue 20's target: 10,000 riders at >= 300 fps):
-# crowd-bench --scene cavalry (riders and foot soldiers 3:1 marching, orbiting camera), method compute,
-# 1920x1080, at about 10,000 and 100,000 riders (13,334 and 133,334 characters: the scene draws each
-# character's model at random by its weight), and the 100,000 again with impostors on. Twice,
-# interleaved so drift shows. Prints the medians and writes $OUT/cavalry.tgz (every run's output and CSV).
+# crowd-bench --scene cavalry (riders and foot soldiers 3:1 in a column on the march, orbiting camera),
+# method compute, 1920x1080, at about 10,000 and 100,000 riders (13,334 and 133,334 characters: the
+# scene draws each character's model at random by its weight), and the 100,000 again with impostors on.
+# Twice, interleaved so drift shows. Prints the medians and writes $OUT/cavalry.tgz (every run's output and CSV).
 #
 # Expects the Vulkan loader packages in .gl/ and crowd-bench in .devbin/ (carried).
 #   on the H100:      bash bench/run_cavalry.sh
