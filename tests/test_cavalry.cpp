@@ -12,6 +12,9 @@
 #include "crowdgpu/crowdgpu.h"
 #include "crowdgpu/error.hpp"
 #include "crowdgpu/model.hpp"
+#include "gpu/error.h"
+#include "model/mounted_model.h"
+#include "model/procedural_models.h"
 
 namespace {
 
@@ -261,4 +264,19 @@ TEST(Cavalry, AGltfRiderRidesInItsRestPoseAndAGltfMountNeedsTheJoint) {
         EXPECT_EQ(e.code(), crowdgpu::ErrorCode::InvalidArgument);
         EXPECT_NE(std::string(e.what()).find("no joint 'saddle'"), std::string::npos) << e.what();
     }
+}
+
+// A pair with more materials than a model may have (MAX_MODEL_MATERIALS) is refused naming both models.
+TEST(Cavalry, MoreMaterialsThanAModelHasIsOneClearError) {
+    model::SkinnedModel horse = model::makeHorse(1), soldier = model::makeSoldier(1);
+    soldier.materialColors.resize(MAX_MODEL_MATERIALS - horse.materialColors.size() + 1, glm::vec4(1.0f));
+    try {
+        model::mountRider(horse, soldier, "saddle", "too many", nullptr);
+        ADD_FAILURE() << "17 materials accepted";
+    } catch (const gpu::Error& e) {
+        EXPECT_EQ(e.kind(), gpu::ErrorKind::InvalidArgument);
+        EXPECT_EQ(std::string(e.what()), "horse and soldier: 17 materials together, more than a model has (16)");
+    }
+    soldier.materialColors.pop_back();
+    EXPECT_EQ(model::mountRider(horse, soldier, "saddle", "just enough", nullptr).materialColors.size(), 16u);
 }
