@@ -288,7 +288,7 @@ TEST(CrowdRenderCli, StandardOutputThatCannotBeWrittenFailsTheRun) {
 TEST(CrowdRenderCli, LateStartsRunInEveryKindOfScene) {
     // Living crowds go straight to the episode holding --start. Before, 64 milling characters at 1e6 s
     // replanned every segment from 0 s for minutes: the time limit fails such a run long before.
-    for (const char* scene : {"mill", "march", "default"}) {
+    for (const char* scene : {"mill", "march", "cavalry", "default"}) {
         const test::ProgramResult r = test::runProgram(
             kRender, std::string("--scene ") + scene + " --count 64 --start 1e6 --frames 2 --size 32x32 --validation "
                      "--out /dev/null", "", 60);

@@ -236,3 +236,21 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
 TEST_F(GpuTest, AllMethodsDrawTheSameSoldiers) { expectMethodsDrawTheSamePicture(*context, "soldier"); }
 
 TEST_F(GpuTest, AllMethodsDrawTheSameHorses) { expectMethodsDrawTheSamePicture(*context, "horse"); }
+
+// The mounted model (docs/cavalry.md) is one character to every method: horse and rider, walking and
+// galloping at their phases, skinned on the GPU equal the CPU reference, at every level of detail.
+TEST_F(GpuTest, MountedModelSkinsLikeTheCpuReference) {
+    const model::SkinnedModel cavalry = test::loadModel("cavalry", 1);
+    for (skin::Method method : {skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Compute,
+                                skin::Method::Static})
+        expectPassOneMatchesCpu(*context, cavalry, 0, method);
+    render::CullSettings lod2;
+    lod2.mode = render::CullMode::Off;
+    lod2.lodThresholds[0] = 1e6f, lod2.lodThresholds[1] = 1e5f;
+    crowd::Crowd crowd(cavalry, mixedCharacters(cavalry, 6));
+    const SkinError error = compareWithCpu(*context, cavalry, crowd, 0, skin::Method::Compute, lod2);
+    EXPECT_LE(error.position, 1e-5 * cavalry.height());
+    EXPECT_LE(error.normal, 1e-5);
+}
+
+TEST_F(GpuTest, AllMethodsDrawTheSameCavalry) { expectMethodsDrawTheSamePicture(*context, "cavalry"); }

@@ -527,6 +527,16 @@ TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForBuiltInModelsMidCrossfade) {
     }
 }
 
+// The mounted model (docs/cavalry.md) mid-crossfade between walk and gallop: horse and rider blended as one.
+TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForTheCavalryMidCrossfade) {
+    const model::SkinnedModel cavalry = test::loadModel("cavalry", 1);
+    crowd::Crowd crowd = crossfadingCrowd({&cavalry, &soldier()}, 24, 2.0f);
+    const PaletteError e = comparePalettes(*context, crowd, 2.0f);
+    EXPECT_EQ(e.compared, 24u);
+    EXPECT_GT(e.blending, 8u) << "most characters are mid-crossfade";
+    EXPECT_LT(e.worst, 1e-5);
+}
+
 TEST_F(GpuTest, GpuPalettesEqualTheCpuJobsForStepAndCubicSplineClips) {
     // The test strip character with a LINEAR clip ("bend") and a STEP + CUBICSPLINE one ("hop").
     test::GltfBuilder b = test::stripCharacter();

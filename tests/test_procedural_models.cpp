@@ -15,6 +15,7 @@
 #include "anim/local_to_model.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
+#include "model/mounted_model.h"
 #include "model/procedural_models.h"
 
 namespace {
@@ -104,6 +105,9 @@ const Character kSoldier{"soldier", &model::makeSoldier, 20, 30,
                          {"spine", "chest", "forearm_l", "forearm_r", "shin_l", "shin_r", "toe_l"}};
 const Character kHorse{"horse", &model::makeHorse, 20, 35, 1000, 2000, {"walk", "gallop"},
                        {"spine", "neck_upper", "front_cannon_l", "hind_cannon_r", "tail_2"}};
+// The soldier on the horse (docs/cavalry.md): both skeletons and meshes, the horse's clips.
+const Character kCavalry{"cavalry", &model::makeCavalry, 40, 65, 2000, 3200, {"walk", "gallop"},
+                         {"spine", "front_cannon_l", "rider_chest", "rider_forearm_r", "rider_shin_l"}};
 
 class ProceduralModel : public testing::TestWithParam<Character> {
 protected:
@@ -348,7 +352,7 @@ TEST_P(ProceduralModel, SeedsVaryProportionsSlightly) {
     EXPECT_TRUE(anyDifferent);
 }
 
-INSTANTIATE_TEST_SUITE_P(BuiltIn, ProceduralModel, testing::Values(kSoldier, kHorse),
+INSTANTIATE_TEST_SUITE_P(BuiltIn, ProceduralModel, testing::Values(kSoldier, kHorse, kCavalry),
                          [](const testing::TestParamInfo<Character>& info) { return info.param.name; });
 
 // ---- The soldier -------------------------------------------------------------------------------

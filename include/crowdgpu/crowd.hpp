@@ -46,6 +46,7 @@ struct GridLayout {
     std::vector<std::int32_t> clips;  // per model: the clip to play (-1 or missing: "walk", else the first)
     bool randomClips = false;    // every character picks a random clip of its model
     bool formation = false;      // an exact grid in step (marching)
+    float depthRatio = 1.0f;     // rows over columns: 1 a square, 4 a column 4x as deep (z) as wide (> 0)
     float scaleVariation = 0.0f; // each character's scale varies by up to this fraction either way
     float tintVariation = 0.0f;  // and each tint channel by up to this one
     std::vector<float> scales;   // per model: a scale for all its characters (empty or missing: 1)

@@ -43,6 +43,12 @@ typedef struct crowdgpu_renderer_t* crowdgpu_renderer;
 /* ---- Models (Vulkan-free) ---- */
 crowdgpu_result crowdgpu_model_soldier(uint32_t seed, crowdgpu_model* out);
 crowdgpu_result crowdgpu_model_horse(uint32_t seed, crowdgpu_model* out);
+/* The soldier on the horse (crowdgpu::Model::cavalry). */
+crowdgpu_result crowdgpu_model_cavalry(uint32_t seed, crowdgpu_model* out);
+/* `rider` seated on `mount`'s joint `saddle_joint` (NULL: "saddle") as one model (Model::mounted);
+   CROWDGPU_ERROR_INVALID_ARGUMENT naming the mount and joint when the mount has no such joint. */
+crowdgpu_result crowdgpu_model_mounted(crowdgpu_model mount, crowdgpu_model rider, const char* saddle_joint,
+                                       crowdgpu_model* out);
 /* asset_root may be NULL (the file's own folder). */
 crowdgpu_result crowdgpu_model_load_gltf(const char* path, const char* asset_root, crowdgpu_model* out);
 /* The clip of this name, or -1. */

@@ -20,6 +20,17 @@ public:
     // their proportions. Costs a few milliseconds (mesh, clips, LODs, pose sphere).
     static Model soldier(std::uint32_t seed = 1);
     static Model horse(std::uint32_t seed = 1);
+    // A rider on a mount as one character (docs/cavalry.md): the mount's skeleton and mesh plus the
+    // rider's, its root seated on the mount's `saddleJoint` (the built-in horse's "saddle"), so the
+    // pair is culled, skinned, shadowed and moved as one and cannot drift apart. Its clips are the
+    // mount's ("walk", "gallop", ...), each joined with a riding clip of the same duration and phase
+    // for a rider whose joints are named as the soldier's (else the rider keeps its rest pose, with a
+    // note). The rider's joints are named "rider_" + their name. Throws Error(InvalidArgument) naming
+    // the mount and the joint when the mount has no such joint, and when the two have more than 16
+    // materials together. Costs what loading a model does (LODs, pose sphere).
+    static Model mounted(const Model& mount, const Model& rider, const std::string& saddleJoint = "saddle");
+    // The built-in cavalryman: the soldier on the horse, named "cavalry".
+    static Model cavalry(std::uint32_t seed = 1);
     // A skinned glTF 2.0 character (.gltf or .glb). External buffers and images must lie inside
     // `assetRoot` (empty: the file's own folder). Throws Error(LoadFailed) naming the file and the
     // problem. Cost: the file's size, plus sampling every clip to bound its poses.

@@ -86,6 +86,20 @@ crowdgpu_result crowdgpu_model_horse(uint32_t seed, crowdgpu_model* out) {
     return guarded([&] { *out = new crowdgpu_model_t{crowdgpu::Model::horse(seed)}; });
 }
 
+crowdgpu_result crowdgpu_model_cavalry(uint32_t seed, crowdgpu_model* out) {
+    if (!out) return invalid("crowdgpu_model_cavalry: out is NULL");
+    return guarded([&] { *out = new crowdgpu_model_t{crowdgpu::Model::cavalry(seed)}; });
+}
+
+crowdgpu_result crowdgpu_model_mounted(crowdgpu_model mount, crowdgpu_model rider, const char* saddle_joint,
+                                       crowdgpu_model* out) {
+    if (!mount || !rider || !out) return invalid("crowdgpu_model_mounted: mount, rider or out is NULL");
+    return guarded([&] {
+        *out = new crowdgpu_model_t{crowdgpu::Model::mounted(mount->model, rider->model,
+                                                             saddle_joint ? saddle_joint : "saddle")};
+    });
+}
+
 crowdgpu_result crowdgpu_model_load_gltf(const char* path, const char* asset_root, crowdgpu_model* out) {
     if (!out || !path) return invalid("crowdgpu_model_load_gltf: path or out is NULL");
     return guarded([&] { *out = new crowdgpu_model_t{crowdgpu::Model::fromGltf(path, asset_root ? asset_root : "")}; });

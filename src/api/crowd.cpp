@@ -1,6 +1,7 @@
 // crowdgpu::Crowd over crowd::Crowd: conversions of the public value types, and errors.
 #include "crowdgpu/crowd.hpp"
 
+#include <cmath>
 #include <cstring>
 
 #include "api/api_data.h"
@@ -66,6 +67,9 @@ Crowd::Crowd(std::vector<Model> models, std::vector<Character> characters, Behav
 
 Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour behaviour) {
     if (layout.count == 0) throw Error(ErrorCode::InvalidArgument, "a grid of 0 characters");
+    if (!(layout.depthRatio > 0.0f) || !std::isfinite(layout.depthRatio))
+        throw Error(ErrorCode::InvalidArgument, "a grid's depthRatio must be a positive number, not " +
+                                                    std::to_string(layout.depthRatio));
     crowd::LayoutOptions options;
     options.count = layout.count;
     options.seed = layout.seed;
@@ -73,6 +77,7 @@ Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour
     options.clips.assign(layout.clips.begin(), layout.clips.end());
     options.randomClips = layout.randomClips;
     options.formation = layout.formation;
+    options.depthRatio = layout.depthRatio;
     options.scaleVariation = layout.scaleVariation;
     options.tintVariation = layout.tintVariation;
     options.scales = layout.scales;

@@ -5,6 +5,7 @@
 #include "crowd/pose_bounds.h"
 #include "model/gltf_loader.h"
 #include "model/lod_builder.h"
+#include "model/mounted_model.h"
 #include "model/procedural_models.h"
 #include "skin/cpu_skinning.h"
 
@@ -29,6 +30,22 @@ Model Model::soldier(std::uint32_t seed) {
 
 Model Model::horse(std::uint32_t seed) {
     return detail::translated([&] { return finish(model::makeHorse(seed), {}); });
+}
+
+Model Model::mounted(const Model& mount, const Model& rider, const std::string& saddleJoint) {
+    return detail::translated([&] {
+        std::vector<std::string> notes;
+        model::SkinnedModel pair = model::mountRider(mount.data()->model, rider.data()->model, saddleJoint,
+                                                     rider.name() + " on " + mount.name(), &notes);
+        return finish(std::move(pair), std::move(notes));
+    });
+}
+
+Model Model::cavalry(std::uint32_t seed) {
+    return detail::translated([&] {
+        // The rider and mount before their levels of detail: finish() builds the pair's own.
+        return finish(model::makeCavalry(seed), {});
+    });
 }
 
 Model Model::fromGltf(const std::string& path, const std::string& assetRoot) {

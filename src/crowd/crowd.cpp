@@ -58,7 +58,8 @@ std::uint32_t clipFor(const model::SkinnedModel& model, std::uint32_t modelIndex
 std::vector<Character> gridLayout(std::span<const model::SkinnedModel* const> models, const LayoutOptions& options) {
     // Room for the widest side of any model plus a gap, so neighbours never intersect.
     const float spacing = widestFootprint(models, options) * 1.25f + 0.3f;
-    const auto columns = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(options.count))));
+    const auto columns = std::max<std::uint32_t>(
+        1u, static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(options.count) / options.depthRatio))));
     const auto rows = (options.count + columns - 1) / columns;
     std::vector<float> weights = options.weights;
     weights.resize(models.size(), weights.empty() ? 1.0f : 0.0f);

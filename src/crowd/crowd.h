@@ -55,6 +55,9 @@ struct LayoutOptions {
     std::vector<float> scales;
     // A formation: exact grid, every character facing +z at phase 0 and speed 1 (marching in step).
     bool formation = false;
+    // Rows over columns of the grid: 1 a square; 4 a column four times as deep (along z, the way a
+    // formation marches) as it is wide. Must be positive.
+    float depthRatio = 1.0f;
     // Each character's scale varies by up to this fraction either way, and each colour channel of its
     // tint by up to this one (seeded), so no two match.
     float scaleVariation = 0.0f;

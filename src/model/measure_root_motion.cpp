@@ -68,7 +68,8 @@ std::optional<glm::vec2> bodyStep(const std::vector<std::vector<glm::vec3>>& pos
 anim::RootMotion measureRootMotion(const SkinnedModel& model, const anim::Clip& clip) {
     anim::RootMotion motion;
     if (!(clip.duration > 0.0f) || model.vertices.empty()) return motion;
-    const float band = kGroundBand * model.height();
+    const float footing = model.footingHeight > 0.0f ? model.footingHeight : model.height();
+    const float band = kGroundBand * footing;
     std::vector<std::vector<glm::vec3>> poses;
     float ground = 1e30f;
     for (int i = 0; i <= kSteps; ++i) {
@@ -88,7 +89,7 @@ anim::RootMotion measureRootMotion(const SkinnedModel& model, const anim::Clip& 
         total += steps[static_cast<std::size_t>(i)].value_or(mean);
         if ((i + 1) % kSubsteps == 0) motion.samples[static_cast<std::size_t>((i + 1) / kSubsteps)] = total;
     }
-    if (glm::length(total) < kInPlace * model.height()) return anim::RootMotion{};
+    if (glm::length(total) < kInPlace * footing) return anim::RootMotion{};
     motion.stride = total;
     return motion;
 }

@@ -62,6 +62,9 @@ Joints addJoints(SkeletonBuilder& b) {
         j.hindCannon[side] = b.add("hind_cannon" + suffix, j.gaskin[side], {x, 0.53f, -0.63f});
         j.hindPastern[side] = b.add("hind_pastern" + suffix, j.hindCannon[side], {x, 0.16f, -0.62f});
     }
+    // Where a rider sits (Model::mounted): on the top line of the back behind the withers, moving with
+    // the spine. No vertex follows it; added last so that the other joints keep their indices.
+    b.add("saddle", j.spine, {0.0f, 1.545f, 0.02f});
     return j;
 }
 

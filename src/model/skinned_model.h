@@ -52,6 +52,10 @@ struct SkinnedModel {
     // xyz centre, w radius (crowd/pose_bounds.h). Culling tests it; zero until computed.
     glm::vec4 poseSphere{0.0f};
 
+    // The height the ground band of root-motion measurement scales with (model/measure_root_motion.h);
+    // 0: height(). A mounted model keeps its mount's, so that it travels exactly as its mount alone.
+    float footingHeight = 0.0f;
+
     std::size_t triangleCount() const { return indices.size() / 3; }
     float height() const { return boundsMax.y - boundsMin.y; }
     // Index of the clip with this name, or -1.

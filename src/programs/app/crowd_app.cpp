@@ -24,6 +24,7 @@ std::string inFlagWords(std::string message) {
 crowdgpu::Model loadNamed(const std::string& name, std::uint32_t seed, const std::string& assetRoot) {
     if (name == "soldier") return crowdgpu::Model::soldier(seed);
     if (name == "horse") return crowdgpu::Model::horse(seed);
+    if (name == "cavalry") return crowdgpu::Model::cavalry(seed);
     std::error_code error;
     const std::string extension = std::filesystem::path(name).extension().string();
     if (extension == ".gltf" || extension == ".glb" || std::filesystem::is_regular_file(name, error)) {
@@ -33,7 +34,7 @@ crowdgpu::Model loadNamed(const std::string& name, std::uint32_t seed, const std
             throw Error(inFlagWords(e.what()));
         }
     }
-    throw Error("--model: unknown model '" + name + "' (soldier, horse, or a .gltf/.glb file)");
+    throw Error("--model: unknown model '" + name + "' (soldier, horse, cavalry, or a .gltf/.glb file)");
 }
 
 // The clip's index, -1 for "" (the default clip).
@@ -129,6 +130,7 @@ crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene)
     }
     const bool living = scene.behaviour != crowdgpu::Behaviour::InPlace;
     layout.formation = scene.behaviour == crowdgpu::Behaviour::March;
+    layout.depthRatio = scene.depthRatio;
     layout.scaleVariation = living ? 0.08f : 0.0f;
     layout.tintVariation = living ? 0.12f : 0.0f;
     return crowdgpu::Crowd::grid(models.models, layout, scene.behaviour);

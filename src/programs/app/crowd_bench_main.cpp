@@ -34,8 +34,8 @@ namespace {
 const char* kUsage = R"(crowd-bench: measures every skinning method on crowds of growing size (the paper's Table 1).
 
 usage: crowd-bench [options]
-  --scene NAME         measure a scene (default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march
-                       or mill) with its crowd, culling, LOD and camera path instead of Table 1; its
+  --scene NAME         measure a scene (default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march,
+                       mill or cavalry) with its crowd, culling, LOD and camera path instead of Table 1; its
                        models and count unless --models and --counts are given
   --lod on|off         override the levels of detail (Table 1: off, as in the paper)
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)

@@ -17,11 +17,12 @@ namespace {
 constexpr const char* kRenderUsage = R"(crowd-render: renders a skinned crowd headless and writes a PNG of the last frame plus timings.
 
 usage: crowd-render [options]
-  --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march or mill: a
-                          crowd, what it does, its culling and LOD, and a camera path (flags beside
-                          it override)
-  --model LIST            soldier, horse or a skinned glTF 2.0 file (.gltf/.glb); several as
-                          NAME[:WEIGHT],... e.g. soldier:3,horse:1 (default soldier)
+  --scene NAME            default, paper-fig3, paper-fig4, paper-fig5, mixed, stress, march, mill or
+                          cavalry: a crowd, what it does, its culling and LOD, and a camera path
+                          (flags beside it override)
+  --model LIST            soldier, horse, cavalry (a soldier on a horse) or a skinned glTF 2.0 file
+                          (.gltf/.glb); several as NAME[:WEIGHT],... e.g. soldier:3,horse:1 (default
+                          soldier)
   --asset-root DIR        let a glTF file's buffers and images come from anywhere inside DIR (default:
                           the file's own folder and below)
   --count N               characters, 1..16777216 (default 1024)
@@ -172,6 +173,7 @@ void applyPreset(const ScenePreset& preset, RenderOptions& options) {
     options.cull.mode = preset.cull;
     options.camera = preset.camera;
     options.scene.behaviour = preset.behaviour;
+    options.scene.depthRatio = preset.depthRatio;
 }
 
 // --scene first, wherever it stands, so that every other flag overrides the preset.

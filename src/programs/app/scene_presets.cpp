@@ -24,6 +24,10 @@ std::vector<ScenePreset> scenePresets() {
          "soldier", 400, true, Culling::Gpu, CameraPath::Orbit, crowdgpu::Behaviour::March},
         {"mill", "4,096 soldiers and horses (3:1) milling: walking, running, stopping, flying over",
          "soldier:3,horse:1", 4096, true, Culling::Gpu, CameraPath::FlyOver, crowdgpu::Behaviour::Mill},
+        {"cavalry",
+         "1,024 riders and foot soldiers (3:1) in a column marching in step, turning about and halting, orbiting "
+         "camera",
+         "cavalry:3,soldier:1", 1024, true, Culling::Gpu, CameraPath::Orbit, crowdgpu::Behaviour::March, 4.0f},
     };
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The scenes every program knows by name (--scene): the paper's Fig. 3, 4 and 5, a mixed crowd, and
-// a stress test, and two living crowds (march, mill); each sets the crowd, what it does, culling, LOD
+// a stress test, and three living crowds (march, mill, cavalry); each sets the crowd, what it does, culling, LOD
 // and a camera path. Flags given beside --scene
 // override its settings.
 #include <cstdint>
@@ -23,6 +23,7 @@ struct ScenePreset {
     crowdgpu::Culling cull;
     app::CameraPath camera;
     crowdgpu::Behaviour behaviour = crowdgpu::Behaviour::InPlace;
+    float depthRatio = 1.0f;  // the grid's rows over columns: 1 a square, more a column (crowdgpu::GridLayout)
 };
 
 std::vector<ScenePreset> scenePresets();

@@ -33,7 +33,7 @@ const char* presentModeName(VkPresentModeKHR mode) {
 }
 
 std::vector<std::string> modelChoices(const std::string& given) {
-    std::vector<std::string> models = {"soldier", "horse"};
+    std::vector<std::string> models = {"soldier", "horse", "cavalry"};
     if (std::find(models.begin(), models.end(), given) == models.end()) models.push_back(given);
     return models;
 }
