@@ -51,6 +51,15 @@ struct SkinnedModel {
     // A sphere in model space holding every vertex in every pose of every clip (and the rest pose):
     // xyz centre, w radius (crowd/pose_bounds.h). Culling tests it; zero until computed.
     glm::vec4 poseSphere{0.0f};
+    // Rigid props attached to joints (model/attach_prop.h), at most MAX_PROPS: prop k is moved by its
+    // own joint (skeleton.propOfJoint == k + 1), a child of the joint it is attached to.
+    struct PropPart {
+        std::string name;
+        std::uint32_t joint = 0;       // the prop's own joint
+        std::uint32_t attachedTo = 0;  // the joint it hangs from
+        float share = 1.0f;            // of the characters that carry it when they do not choose
+    };
+    std::vector<PropPart> props;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     float height() const { return boundsMax.y - boundsMin.y; }

@@ -299,7 +299,7 @@ int run(const BenchOptions& options, const std::string& command) {
     // Every model is loaded (and a bad one reported) before the device starts and progress is printed.
     std::vector<app::CrowdModels> crowds;
     for (const std::string& modelList : options.models)
-        crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot));
+        crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot, options.scene.scene.props));
     checkHostMemory(crowds, options);
     app::HostDevice context({options.validation, options.device, {}, false});
     // Once, before any row: a sample count the device lacks would otherwise skip every configuration.

@@ -47,6 +47,7 @@ struct SceneOptions {
     std::uint32_t seed = 1;
     std::string assetRoot;          // folder a glTF model's external files must lie in; "" = the model's own
     crowdgpu::Behaviour behaviour = crowdgpu::Behaviour::InPlace;  // what the characters do (crowdgpu/crowd.hpp)
+    bool props = true;              // --props: characters carry their models' props (docs/props.md)
 };
 
 struct RenderOptions {
