@@ -11,6 +11,7 @@
 #include "app/crowd_app.h"
 #include "app/crowd_renderer.h"
 #include "crowd/pose_bounds.h"
+#include "crowdgpu/crowdgpu.h"
 #include "crowdgpu/model.hpp"
 #include "gpu/error.h"
 #include "model/attach_prop.h"
@@ -147,6 +148,21 @@ TEST(Props, AMissingJointIsOneErrorNamingTheModelAndTheJoint) {
     EXPECT_EQ(carrying.triangleCount(), soldier.triangleCount() + crowdgpu::Prop::flag().triangleCount());
     EXPECT_EQ(carrying.propCount(), soldier.propCount() + 1);
     EXPECT_EQ(carrying.jointName(carrying.propJoint(carrying.propCount() - 1)), "flag_2");  // "flag" is taken
+}
+
+TEST(Props, TheCApiRefusesAMissingJointInOneLine) {
+    crowdgpu_model soldier = nullptr, carrying = nullptr;
+    ASSERT_EQ(crowdgpu_model_soldier(1, &soldier), CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_with_prop(soldier, "flag", "tail", nullptr, 1.0f, &carrying), CROWDGPU_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(carrying, nullptr);
+    const std::string message = crowdgpu_last_error();
+    EXPECT_NE(message.find("'tail'"), std::string::npos) << message;
+    EXPECT_NE(message.find("soldier"), std::string::npos) << message;
+    EXPECT_EQ(crowdgpu_model_with_prop(soldier, "banana", "head", nullptr, 1.0f, &carrying), CROWDGPU_ERROR_INVALID_ARGUMENT);
+    ASSERT_EQ(crowdgpu_model_with_prop(soldier, "flag", "head", nullptr, 0.5f, &carrying), CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_find_joint(carrying, "flag_2"), crowdgpu_model_find_joint(soldier, "flag") + 1);
+    crowdgpu_model_destroy(carrying);
+    crowdgpu_model_destroy(soldier);
 }
 
 TEST(Props, OneSoldierInEightCarriesAFlagByTheSeedAndEveryOneARifle) {

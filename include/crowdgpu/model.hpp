@@ -72,7 +72,7 @@ public:
     std::uint32_t jointCount() const;
     std::uint32_t vertexCount() const;
     std::uint32_t triangleCount() const;
-    float height() const;  // metres (glTF units), rest pose
+    float height() const;  // metres (glTF units), rest pose, props left out
     std::uint32_t lodCount() const;
     std::uint32_t lodTriangles(std::uint32_t lod) const;
     std::uint32_t lodVertices(std::uint32_t lod) const;

@@ -103,6 +103,19 @@ void attachProp(SkinnedModel& model, const PropMesh& prop, const std::string& jo
     computeBounds(model);
 }
 
+std::uint32_t propsMostCarry(const SkinnedModel& model) {
+    std::uint32_t carried = 0;
+    for (std::size_t k = 0; k < model.props.size(); ++k)
+        if (model.props[k].share >= 0.5f) carried |= 1u << k;
+    return carried;
+}
+
+bool onPropLeftOut(const SkinnedModel& model, const gpu::SkinVertex& v, std::uint32_t carried) {
+    const std::vector<std::uint32_t>& propOfJoint = model.skeleton.propOfJoint;
+    if (v.joints.x >= propOfJoint.size() || propOfJoint[v.joints.x] == 0u) return false;
+    return (carried >> (propOfJoint[v.joints.x] - 1u) & 1u) == 0u;
+}
+
 std::uint32_t defaultPropsCarried(const SkinnedModel& model, std::uint32_t seed, std::uint32_t character) {
     std::uint32_t carried = 0;
     for (std::size_t k = 0; k < model.props.size(); ++k) {

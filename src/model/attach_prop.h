@@ -21,6 +21,12 @@ namespace model {
 void attachProp(SkinnedModel& model, const PropMesh& prop, const std::string& joint, const glm::mat4& offset,
                 float share = 1.0f);
 
+// The props at least half of a crowd carries by default (share >= 0.5): the ones the model's pose
+// sphere holds and its impostors show (docs/props.md, "What a rare prop gives up").
+std::uint32_t propsMostCarry(const SkinnedModel& model);
+// Whether vertex `v` belongs to a prop outside `carried`.
+bool onPropLeftOut(const SkinnedModel& model, const gpu::SkinVertex& v, std::uint32_t carried);
+
 // The props a character carries when it does not choose: prop k when a hash of (seed, character, k)
 // falls below its share, so a crowd gets the same carriers every run.
 std::uint32_t defaultPropsCarried(const SkinnedModel& model, std::uint32_t seed, std::uint32_t character);

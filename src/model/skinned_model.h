@@ -35,7 +35,7 @@ struct SkinnedModel {
     // Bit m set: material m's colour is materialColors[m] times baseColorTexture at the vertex's uv
     // (glTF's baseColorFactor * baseColorTexture); clear: materialColors[m] alone.
     std::uint32_t texturedMaterials = 0;
-    // Axis-aligned bounds of the bind pose in model space (y is up).
+    // Axis-aligned bounds of the bind pose in model space (y is up), props left out (the body's).
     glm::vec3 boundsMin{0.0f};
     glm::vec3 boundsMax{0.0f};
 
@@ -67,7 +67,7 @@ struct SkinnedModel {
     int findClip(const std::string& clipName) const;
 };
 
-// Recomputes boundsMin/boundsMax from the vertices.
+// Recomputes boundsMin/boundsMax from the vertices, those of props (model/attach_prop.h) left out.
 void computeBounds(SkinnedModel& model);
 
 }  // namespace model

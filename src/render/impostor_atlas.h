@@ -89,10 +89,6 @@ private:
 
 // The bone matrices of every pose the atlas captures, model after model, clip after clip, frame after
 // frame (identity placement: the model's own space); `firstBone[m]` is where model m's poses begin.
-// The props an impostor of `model` shows: those at least half of a crowd carries by default (the
-// atlas holds one picture of each pose, docs/props.md).
-std::uint32_t atlasPropsCarried(const model::SkinnedModel& model);
-
 std::vector<gpu::BoneRows> impostorPoses(std::span<const model::SkinnedModel* const> models,
                                          std::span<const gpu::ImpostorModel> plan, std::vector<std::uint32_t>& firstBone);
 

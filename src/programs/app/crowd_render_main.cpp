@@ -45,7 +45,7 @@ float parseSeconds(const std::string& text) {
 crowdgpu::Model loadAndNote(const app::RenderOptions& options) {
     std::vector<std::string> notes;
     crowdgpu::Model model = app::loadModel(app::parseModelList(options.scene.model).front().first,
-                                               options.scene.seed, &notes, options.scene.assetRoot);
+                                               options.scene.seed, &notes, options.scene.assetRoot, options.scene.props);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     return model;
 }
