@@ -8,6 +8,8 @@
 # Expects the Vulkan loader packages in .gl/ and crowd-bench in .devbin/ (carried).
 #   on the H100:      bash bench/run_props.sh
 #   here on lavapipe: DEVICE= FRAMES=5 WARMUP=1 SIZE=480x270 bash bench/run_props.sh
+#     (compute with props is skipped there: 10,240 soldiers' skinned positions, 137.8 MiB, pass lavapipe's
+#     128 MiB storage-buffer range; METHODS=two-pass runs only what it can)
 # FRAMES (default 300) and WARMUP (30) as crowd-bench's --frames and --warmup; DEVICE (NVIDIA): part of
 # the device's name, empty for the first device; SIZE (1920x1080); METHODS (compute two-pass).
 set -uo pipefail
@@ -42,8 +44,8 @@ done
   echo
   echo "paper-fig4, $size; crowd-bench medians over $frames frames after $warmup warm-up, in ms; frame: wall clock"
   echo "between frame starts (two frames in flight); gpu: every pass's GPU time; skin: the skinning pass; draw:"
-  echo "the colour pass ($(csv_value "$res/bench-${methods%% *}-off-1.csv" pass_clock)). off: --props off (no soldier"
-  echo "carries anything: the props' triangles collapse to points); on: the default (a rifle each, one in eight a flag)."
+  echo "the colour pass ($(csv_value "$res/bench-${methods%% *}-off-1.csv" pass_clock)). off: --props off (the soldier"
+  echo "without props, 1,020 triangles); on: the default (a rifle each, one in eight a flag; 1,116 triangles)."
   printf "%-9s %-5s %1s | %8s %8s | %8s %8s | %8s %8s | %8s %8s\n" method props r frame "vs off" gpu "vs off" skin "vs off" draw "vs off"
   for round in 1 2 3; do
     for method in $methods; do

@@ -45,6 +45,8 @@ usage: crowd-bench [options]
                        (default compute)
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
+  --props on|off       soldiers carry their rifle (and one in eight a flag); off: the soldier without
+                       props (default on; docs/props.md)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
   --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default auto)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
