@@ -40,6 +40,10 @@ using uint = std::uint32_t;
 // Threads per workgroup of the cull, emit and skinning compute passes.
 #define CULL_WORKGROUP_SIZE 64
 
+// Props one model may carry (model/attach_prop.h): a character's choice is a mask of this many bits,
+// held exactly as a float in CharacterRecord.pose.z.
+#define MAX_PROPS 16
+
 // Most influences a vertex can have; the loaders reduce to the 4 largest.
 #define MAX_INFLUENCES 4
 // Every model's material colours live in one palette in SceneUniforms (the pool offsets each
@@ -86,7 +90,9 @@ struct CharacterRecord {
                      // characters, w: its clips: bits 0-15 the clip it fades from, 16-31 the clip it
                      // fades to (the same clip twice when it plays one)
     vec4 pose;       // x: normalized phase in cycles (both clips of a crossfade are at the same point of
-                     // their cycles, fract(x)), y: weight of the clip faded to (0..1), z, w: unused
+                     // their cycles, fract(x)), y: weight of the clip faded to (0..1), z: the props it
+                     // carries (bit k: its model's prop k; an integer below 2^MAX_PROPS, exact as a
+                     // float; fixed while the crowd is), w: unused
 };
 
 // One (model, LOD) bucket, fixed while the crowd is: where its visible characters are listed and
@@ -271,7 +277,7 @@ struct AnimationModel {
 struct AnimationJoint {
     vec4 restTranslation;  // xyz, w: parent joint within the model (-1 for a root), exact as a float
     vec4 restRotation;     // quaternion x, y, z, w
-    vec4 restScale;        // xyz, w: unused
+    vec4 restScale;        // xyz, w: 0 for a body joint, k + 1 for the joint of the model's prop k (exact)
     BoneRows inverseBind;
 };
 

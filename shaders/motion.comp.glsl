@@ -29,7 +29,7 @@ void moveCharacter(uint c) {
     }
     characters[c].placement = vec4(position, motionHeading(m, elapsed));
     characters[c].ids.w = m.clips.x | (m.clips.y << 16u);
-    characters[c].pose = vec4(motionPhase(m, elapsed), motionWeight(m, elapsed), 0.0, 0.0);
+    characters[c].pose.xy = vec2(motionPhase(m, elapsed), motionWeight(m, elapsed));  // z: its props, fixed
 }
 
 void main() {

@@ -81,7 +81,13 @@ void main() {
                 parent = int(animJoints[model.info.x + uint(parent)].restTranslation.w);
             }
             BoneRows top = composeAffine(placementAffine(character.placement, character.tint.w), model.root);
-            bones[character.ids.y + j] = composeAffine(composeAffine(top, chain), animJoints[model.info.x + j].inverseBind);
+            BoneRows world = composeAffine(top, chain);
+            // A prop the character does not carry: collapsed to a point at its joint (anim/props_carried.h).
+            uint prop = uint(animJoints[model.info.x + j].restScale.w);
+            bool carried = prop == 0u || ((uint(character.pose.z) >> (prop - 1u)) & 1u) != 0u;
+            bones[character.ids.y + j] = carried ? composeAffine(world, animJoints[model.info.x + j].inverseBind)
+                                                 : BoneRows(vec4(0.0, 0.0, 0.0, world.row0.w), vec4(0.0, 0.0, 0.0, world.row1.w),
+                                                            vec4(0.0, 0.0, 0.0, world.row2.w));
         }
     }
 }

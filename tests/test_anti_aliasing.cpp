@@ -90,8 +90,10 @@ TEST_F(GpuTest, FourSamplesBringTheDefaultSceneTowardsItsSupersampledRender) {
 TEST_F(GpuTest, FourSamplesBringImpostorsTowardsTheirSupersampledRender) {
     if (!hasFourSamples(*device)) GTEST_SKIP() << "no 4-sample colour and depth on this device";
     // Inside a crowd of impostors (alpha to coverage at 4 samples, their cut at half coverage at 1).
+    // Without props: a flag carrier's impostor has no flag while its supersampled mesh does (docs/props.md),
+    // an error no anti-aliasing removes (with props: 28.15 dB off, 28.01 msaa4).
     // Lavapipe: 30.3 dB off, 34.9 dB msaa4 (+4.5 dB); the margin asked is under half that.
-    const Closeness c = closenessToSupersampled("--scene stress --count 4000 --start 20 --impostors on --method compute",
+    const Closeness c = closenessToSupersampled("--scene stress --count 4000 --start 20 --impostors on --method compute --props off",
                                                 "impostors");
     EXPECT_GT(c.msaa4, c.off + 2.0);
     // Alpha to coverage turns an impostor's alpha into samples covered, not into the picture's alpha.

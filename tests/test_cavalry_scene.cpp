@@ -96,6 +96,8 @@ TEST_F(GpuTest, CavalrySceneDrawsItsRidersWhereTheCpuPutsThem) {
             if (cavalry.vertices[tri[0]].joints.x < horseJoints) continue;  // the horse's
             glm::vec2 p[3];
             for (int k = 0; k < 3; ++k) p[k] = toPixel(riders.viewProjection, glm::vec3(skinned[tri[k]].position), kWidth, kHeight);
+            // A prop the rider does not carry is collapsed to a point: no area, no pixel.
+            if ((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x) == 0.0f) continue;
             const glm::vec2 lo = glm::floor(glm::min(p[0], glm::min(p[1], p[2]))) - 1.0f;
             const glm::vec2 hi = glm::ceil(glm::max(p[0], glm::max(p[1], p[2]))) + 1.0f;
             for (int y = std::max(0, int(lo.y)); y <= std::min(int(kHeight) - 1, int(hi.y)); ++y)

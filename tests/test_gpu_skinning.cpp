@@ -163,6 +163,7 @@ TEST_F(GpuTest, CharactersWithEqualPhasesHaveEqualPosesAndDifferentPhasesDiffer)
     characters[0] = {walk, 0.2f, 1.0f, glm::vec3(0, 0, 0), 0.0f};
     characters[1] = {walk, 0.2f, 1.0f, glm::vec3(4, 0, 0), 0.0f};  // same phase, elsewhere
     characters[2] = {walk, 0.6f, 1.0f, glm::vec3(8, 0, 0), 0.0f};  // other phase
+    for (crowd::Character& c : characters) c.props = 0x1u;  // the same props (the default choice hashes the index)
     crowd::Crowd crowd(soldier, characters);
     test::RendererOptions options;
     options.size = {32, 32};

@@ -20,6 +20,9 @@ namespace detail { struct CrowdData; }
 
 // What a character is when it enters the crowd: it plays `clip` in place until its behaviour or a
 // command moves it.
+// Character::props for a character that does not choose its props.
+inline constexpr std::uint32_t kModelProps = 0xFFFFFFFFu;
+
 struct Character {
     std::uint32_t model = 0;     // index into the crowd's models
     std::uint32_t clip = 0;      // index into its model's clips
@@ -29,6 +32,9 @@ struct Character {
     float heading = 0.0f;        // radians about +y; 0 faces +z
     float scale = 1.0f;
     float tint[3] = {1.0f, 1.0f, 1.0f};  // linear colour multiplier
+    // Bit k: it carries its model's prop k (Model::propName); kModelProps: chosen by each prop's share
+    // and the crowd's seed (Crowd::character reports the choice). Bits past the model's props are ignored.
+    std::uint32_t props = kModelProps;
 };
 
 // The most models one crowd mixes (the renderer's per-model tables are this long).
@@ -50,6 +56,7 @@ struct GridLayout {
     float scaleVariation = 0.0f; // each character's scale varies by up to this fraction either way
     float tintVariation = 0.0f;  // and each tint channel by up to this one
     std::vector<float> scales;   // per model: a scale for all its characters (empty or missing: 1)
+    bool props = true;           // characters carry their models' props by share and seed; false: none
 };
 
 // Where a character is and what it plays at a time.

@@ -56,6 +56,12 @@ int32_t crowdgpu_model_find_clip(crowdgpu_model model, const char* name);
 uint32_t crowdgpu_model_clip_count(crowdgpu_model model);
 /* The joint of this name (the soldier's "hand_r", a glTF node's name), or -1. */
 int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name);
+/* A new model: `model` carrying a built-in prop, "rifle" or "flag", on the joint named `joint` (docs/props.md).
+ * offset: the prop's space to the joint's, three rows of a 3x4 matrix [R*s | t] (NULL: identity); share:
+ * of the characters that carry it (0..1; C characters and grids choose by share and seed). Fails with
+ * CROWDGPU_ERROR_INVALID_ARGUMENT naming the model and the joint when the model has no such joint. */
+crowdgpu_result crowdgpu_model_with_prop(crowdgpu_model model, const char* prop, const char* joint,
+                                         const float offset[12], float share, crowdgpu_model* out);
 void crowdgpu_model_destroy(crowdgpu_model model);
 
 /* ---- Crowds (Vulkan-free) ---- */

@@ -12,13 +12,45 @@
 
 namespace crowdgpu {
 
-namespace detail { struct ModelData; }
+namespace detail { struct ModelData; struct PropData; }
+
+// A rigid mesh a character carries on a joint (a rifle, a flag, a shield): drawn, culled, shadowed,
+// given levels of detail and baked into impostors with its character, at no cost per prop per frame
+// (docs/props.md). Immutable and cheap to copy.
+class Prop {
+public:
+    // The built-in rifle (0.95 m along +z, muzzle forward, the grip at the origin) and flag (a 2 m pole
+    // along +y from 0.4 m below the origin, where a hand holds it, its cloth at the top towards -z).
+    static Prop rifle();
+    static Prop flag();
+
+    const std::string& name() const;
+    std::uint32_t vertexCount() const;
+    std::uint32_t triangleCount() const;
+
+    const std::shared_ptr<const detail::PropData>& data() const { return data_; }
+    explicit Prop(std::shared_ptr<const detail::PropData> data);
+
+private:
+    std::shared_ptr<const detail::PropData> data_;
+};
+
+// A prop on a joint: its world transform is the joint's world transform times `offset`.
+struct PropAttachment {
+    Prop prop;
+    std::string joint;  // the joint's name (Model::findJoint)
+    // The prop's space to the joint's: three rows of a 3x4 matrix [R*s | t], row-major (as
+    // Crowd::jointWorld writes), a rotation, a uniform scale and a translation in metres.
+    float offset[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    float share = 1.0f;  // of the characters that carry it when they do not choose (Character::props)
+};
 
 class Model {
 public:
-    // The built-in soldier (about 1.8 m; clips walk, run, idle, wave, ...) and horse; `seed` varies
-    // their proportions. Costs a few milliseconds (mesh, clips, LODs, pose sphere).
-    static Model soldier(std::uint32_t seed = 1);
+    // The built-in soldier (about 1.8 m; clips walk, run, idle) and horse; `seed` varies their
+    // proportions. The soldier carries a rifle and, one in eight, a flag (props, docs/props.md);
+    // `props` false: neither (their cost, measured). Costs a few milliseconds (mesh, clips, LODs, sphere).
+    static Model soldier(std::uint32_t seed = 1, bool props = true);
     static Model horse(std::uint32_t seed = 1);
     // A rider on a mount as one character (docs/cavalry.md): the mount's skeleton and mesh plus the
     // rider's, its root seated on the mount's `saddleJoint` (the built-in horse's "saddle"), so the
@@ -37,10 +69,21 @@ public:
     static Model fromGltf(const std::string& path, const std::string& assetRoot = {});
 
     const std::string& name() const;
+    // This model carrying `props` besides its own (appended as props propCount(), ...): each prop is a
+    // rigid part of the mesh on a joint of its own, named after it and child of the attachment's joint,
+    // so jointCount() grows by one a prop. Levels of detail and the pose sphere are built again
+    // (milliseconds). Throws Error(InvalidArgument) naming the model and the joint when it has no such
+    // joint, and for an offset that is not a rotation with a uniform scale, a share outside [0, 1],
+    // more than 16 props or 16 materials.
+    Model withProps(const std::vector<PropAttachment>& props) const;
+    // Its props (the soldier's: 0 "rifle" in the right hand, 1 "flag" in the left, carried by one in eight).
+    std::uint32_t propCount() const;
+    const std::string& propName(std::uint32_t prop) const;  // throws Error(InvalidArgument) past propCount()
+    std::uint32_t propJoint(std::uint32_t prop) const;      // the prop's own joint (Crowd::jointWorld)
     std::uint32_t jointCount() const;
     std::uint32_t vertexCount() const;
     std::uint32_t triangleCount() const;
-    float height() const;  // metres (glTF units), rest pose
+    float height() const;  // metres (glTF units), rest pose, props left out
     std::uint32_t lodCount() const;
     std::uint32_t lodTriangles(std::uint32_t lod) const;
     std::uint32_t lodVertices(std::uint32_t lod) const;

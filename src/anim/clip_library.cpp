@@ -52,7 +52,7 @@ std::uint32_t ClipLibrary::addModel(const Skeleton& skeleton, std::span<const Cl
         gpu::AnimationJoint joint{};
         joint.restTranslation = glm::vec4(rest.translation, static_cast<float>(skeleton.parents[j]));
         joint.restRotation = glm::vec4(rest.rotation.x, rest.rotation.y, rest.rotation.z, rest.rotation.w);
-        joint.restScale = glm::vec4(rest.scale, 0.0f);
+        joint.restScale = glm::vec4(rest.scale, j < skeleton.propOfJoint.size() ? static_cast<float>(skeleton.propOfJoint[j]) : 0.0f);
         joint.inverseBind = toRows(skeleton.inverseBind[j]);
         joints_.push_back(joint);
     }

@@ -20,6 +20,10 @@ struct Skeleton {
     std::vector<glm::mat4> inverseBind;
     // Transform of whatever sits above the root joints (glTF nodes above the skeleton).
     glm::mat4 rootTransform{1.0f};
+    // Per joint: 0 for the body's joints, k + 1 for the joint that carries the model's prop k
+    // (model/attach_prop.h). A character that does not carry prop k gets that joint's bone collapsed to
+    // a point (anim/props_carried.h). Empty: the model has no props.
+    std::vector<std::uint32_t> propOfJoint;
 
     std::size_t jointCount() const { return parents.size(); }
 };

@@ -12,6 +12,7 @@
 #include "crowdgpu/error.hpp"
 #include "crowdgpu/model.hpp"
 #include "gpu/error.h"
+#include "model/prop_mesh.h"
 #include "model/skinned_model.h"
 
 namespace crowdgpu::detail {
@@ -19,6 +20,10 @@ namespace crowdgpu::detail {
 struct ModelData {
     model::SkinnedModel model;
     std::vector<std::string> notes;
+};
+
+struct PropData {
+    model::PropMesh mesh;
 };
 
 struct CrowdData {

@@ -116,6 +116,20 @@ int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name) {
 uint32_t crowdgpu_model_clip_count(crowdgpu_model model) { return model ? model->model.clipCount() : 0; }
 void crowdgpu_model_destroy(crowdgpu_model model) { delete model; }
 
+crowdgpu_result crowdgpu_model_with_prop(crowdgpu_model model, const char* prop, const char* joint,
+                                         const float offset[12], float share, crowdgpu_model* out) {
+    if (!model || !prop || !joint || !out) return invalid("crowdgpu_model_with_prop: model, prop, joint or out is NULL");
+    const std::string name = prop;
+    if (name != "rifle" && name != "flag")
+        return invalid(("crowdgpu_model_with_prop: no built-in prop '" + name + "' (rifle or flag)").c_str());
+    return guarded([&] {
+        crowdgpu::PropAttachment attachment{name == "rifle" ? crowdgpu::Prop::rifle() : crowdgpu::Prop::flag(), joint};
+        if (offset) std::memcpy(attachment.offset, offset, sizeof attachment.offset);
+        attachment.share = share;
+        *out = new crowdgpu_model_t{model->model.withProps({attachment})};
+    });
+}
+
 crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_t model_count, uint32_t count,
                                            uint32_t seed, crowdgpu_behaviour behaviour, crowdgpu_crowd* out) {
     if (!out || !models || model_count == 0) return invalid("crowdgpu_crowd_create_grid: no models or out is NULL");

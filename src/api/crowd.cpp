@@ -32,6 +32,7 @@ crowd::Character toInternal(const Character& c) {
     result.heading = c.heading;
     result.scale = c.scale;
     result.tint = glm::vec3(c.tint[0], c.tint[1], c.tint[2]);
+    result.props = c.props;
     return result;
 }
 
@@ -80,6 +81,7 @@ Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour
     options.depthRatio = layout.depthRatio;
     options.scaleVariation = layout.scaleVariation;
     options.tintVariation = layout.tintVariation;
+    options.props = layout.props;
     options.scales = layout.scales;
     std::vector<crowd::Character> characters = detail::translated(
         [&] { return crowd::gridLayout(detail::internalModels(models), options); });
@@ -182,6 +184,7 @@ Character Crowd::character(std::uint32_t character) const {
     result.heading = c.heading;
     result.scale = c.scale;
     result.tint[0] = c.tint.x, result.tint[1] = c.tint.y, result.tint[2] = c.tint.z;
+    result.props = c.props;  // as resolved: the props it carries
     return result;
 }
 

@@ -24,8 +24,8 @@ Model finish(model::SkinnedModel model, std::vector<std::string> notes) {
 
 Model::Model(std::shared_ptr<const detail::ModelData> data) : data_(std::move(data)) {}
 
-Model Model::soldier(std::uint32_t seed) {
-    return detail::translated([&] { return finish(model::makeSoldier(seed), {}); });
+Model Model::soldier(std::uint32_t seed, bool props) {
+    return detail::translated([&] { return finish(model::makeSoldier(seed, props), {}); });
 }
 
 Model Model::horse(std::uint32_t seed) {

@@ -11,12 +11,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "anim/soa_blending_job.h"
+#include "anim/props_carried.h"
 #include "anim/soa_palette_job.h"
 #include "anim/soa_sampling_job.h"
 #include "crowd/epoch.h"
 #include "crowd/worker_pool.h"
 #include "model/measure_root_motion.h"
 #include "gpu/error.h"
+#include "model/attach_prop.h"
 
 namespace crowd {
 
@@ -84,6 +86,7 @@ std::vector<Character> gridLayout(std::span<const model::SkinnedModel* const> mo
         c.heading = (unit(random) - 0.5f) * 0.5f;
         c.scale = c.model < options.scales.size() ? options.scales[c.model] : 1.0f;
         c.tint = glm::vec3(brightnessVariation(i));
+        c.props = options.props ? model::defaultPropsCarried(*models[c.model], options.seed, i) : 0u;
         if (options.scaleVariation > 0.0f) c.scale *= 1.0f + options.scaleVariation * (2.0f * unit(random) - 1.0f);
         if (options.tintVariation > 0.0f)
             for (int k = 0; k < 3; ++k) c.tint[k] *= 1.0f + options.tintVariation * (2.0f * unit(random) - 1.0f);
@@ -133,6 +136,9 @@ void Crowd::addCharacter(const Character& c) {
         throw gpu::Error("character " + std::to_string(index) + " names clip " + std::to_string(c.clip) + " of " +
                          m.name + ", which has " + std::to_string(m.clips.size()));
     characters_.push_back(c);
+    Character& added = characters_.back();
+    const std::uint32_t modelProps = (1u << m.props.size()) - 1u;  // props.size() <= MAX_PROPS < 32
+    added.props = c.props == kModelProps ? model::defaultPropsCarried(m, behaviour_.seed, index) : c.props & modelProps;
     cursorOffsets_.push_back(cursors_.size());
     cursors_.resize(cursors_.size() + 6u * m.skeleton.jointCount(), 0u);
     // Phase and rate as the paper's crowd plays them: clip time = timeOffset + time x speed.
@@ -379,7 +385,8 @@ void Crowd::poseRecord(std::uint32_t index, double time, gpu::CharacterRecord& r
 void Crowd::writePose(const MotionState& state, gpu::CharacterRecord& record) {
     record.placement = glm::vec4(state.position, state.heading);
     record.ids.w = state.clipFrom | (state.clipTo << 16);
-    record.pose = glm::vec4(state.phase, state.weight, 0.0f, 0.0f);
+    record.pose.x = state.phase;  // z, the props carried, is the character's for good (crowd_buffers.cpp)
+    record.pose.y = state.weight;
 }
 
 void Crowd::animateCharacter(std::uint32_t index, double time, std::span<gpu::BoneRows> out) const {
@@ -414,8 +421,9 @@ void Crowd::animateState(std::uint32_t index, const MotionState& state, std::spa
         }
     }
     const anim::Affine placement = anim::placementAffine(state.position, state.heading, c.scale);
-    anim::SoaPaletteJob{&library_, c.model, placement, to, world.empty() ? std::span<anim::Affine>(modelSpace) : world,
-                        out.first(joints)}.run();
+    const std::span<anim::Affine> worldOut = world.empty() ? std::span<anim::Affine>(modelSpace) : world;
+    anim::SoaPaletteJob{&library_, c.model, placement, to, worldOut, out.first(joints)}.run();
+    anim::collapseUncarriedProps(models_[c.model]->skeleton.propOfJoint, c.props, worldOut, out.first(joints));
 }
 
 void Crowd::animate(double time, std::span<gpu::BoneRows> out, std::span<const std::uint32_t> boneOffsets,

@@ -29,6 +29,9 @@
 
 namespace crowd {
 
+// Character::props when the character does not choose: its model's props by their shares.
+inline constexpr std::uint32_t kModelProps = 0xFFFFFFFFu;
+
 // What a character is when it enters the crowd: it plays `clip` in place from time 0 (the paper's
 // crowd) until its behaviour or a command moves it.
 struct Character {
@@ -40,6 +43,9 @@ struct Character {
     std::uint32_t model = 0;  // index into the crowd's models
     float scale = 1.0f;       // uniform scale of the model
     glm::vec3 tint{1.0f};     // colour multiplier, so a crowd of one model does not look cloned
+    // Bit k: it carries its model's prop k (model/attach_prop.h); kModelProps: the crowd draws them by
+    // each prop's share (model::defaultPropsCarried), so a grid gets its variety without choosing.
+    std::uint32_t props = kModelProps;
 };
 
 struct LayoutOptions {
@@ -62,6 +68,8 @@ struct LayoutOptions {
     // tint by up to this one (seeded), so no two match.
     float scaleVariation = 0.0f;
     float tintVariation = 0.0f;
+    // Characters carry their models' props by each prop's share and the seed; false: none carries any.
+    bool props = true;
 };
 
 // Characters on a square grid centred on the origin, facing +z, with seeded jitter of position,

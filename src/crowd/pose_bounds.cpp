@@ -11,6 +11,7 @@
 #include "anim/pose_reach.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
+#include "model/attach_prop.h"
 #include "skin/cpu_skinning.h"
 
 namespace crowd {
@@ -66,7 +67,11 @@ model::SkinnedModel distinctPositions(const model::SkinnedModel& model) {
     using Key = std::array<std::uint32_t, 12>;
     std::set<Key> seen;
     model::SkinnedModel distinct;
+    const std::uint32_t carried = model::propsMostCarry(model);
     for (const gpu::SkinVertex& v : model.vertices) {
+        // A rare prop (the soldier's flag) would grow every character's sphere, which sizes levels of
+        // detail and impostor cells too: it is left out (docs/props.md).
+        if (model::onPropLeftOut(model, v, carried)) continue;
         Key key;
         std::memcpy(key.data(), &v.position, 16);
         std::memcpy(key.data() + 4, &v.joints, 32);

@@ -64,6 +64,26 @@ void appendRiderSkeleton(anim::Skeleton& out, const anim::Skeleton& rider, std::
     }
 }
 
+// The rider's props (a soldier's rifle, a flag) stay props of the pair, after the mount's: each
+// character still chooses which it carries, and the pair's bounds leave them out as the rider's did.
+void appendRiderProps(SkinnedModel& out, const SkinnedModel& mount, const SkinnedModel& rider, std::uint32_t jointOffset) {
+    out.props = mount.props;
+    if (mount.props.size() + rider.props.size() > MAX_PROPS)
+        throw gpu::Error(mount.name + " and " + rider.name + ": " + std::to_string(mount.props.size() + rider.props.size()) +
+                         " props together, more than a model carries (" + std::to_string(MAX_PROPS) + ")");
+    const auto propShift = static_cast<std::uint32_t>(mount.props.size());
+    for (SkinnedModel::PropPart prop : rider.props) {
+        prop.joint += jointOffset;
+        prop.attachedTo += jointOffset;
+        out.props.push_back(prop);
+    }
+    if (out.props.empty()) return;
+    anim::Skeleton& s = out.skeleton;
+    s.propOfJoint.resize(s.jointCount(), 0u);  // the mount's joints first (0 where it had none)
+    for (std::size_t j = 0; j < rider.skeleton.propOfJoint.size(); ++j)
+        if (rider.skeleton.propOfJoint[j] != 0) s.propOfJoint[jointOffset + j] = rider.skeleton.propOfJoint[j] + propShift;
+}
+
 // Materials and the one texture: the rider's materials follow the mount's.
 void mergeMaterials(SkinnedModel& out, const SkinnedModel& mount, const SkinnedModel& rider,
                     std::vector<std::string>* notes) {
@@ -125,6 +145,7 @@ SkinnedModel mountRider(const SkinnedModel& mount, const SkinnedModel& rider, co
     out.skeleton = mount.skeleton;
     const auto jointOffset = static_cast<std::uint32_t>(mount.skeleton.jointCount());
     appendRiderSkeleton(out.skeleton, rider.skeleton, saddle, mountRest[saddle], placement);
+    appendRiderProps(out, mount, rider, jointOffset);
     mergeMaterials(out, mount, rider, notes);
     out.vertices = mount.vertices;
     out.indices = mount.indices;

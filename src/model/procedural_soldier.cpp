@@ -1,7 +1,11 @@
-// The built-in soldier: a low-poly humanoid in helmet and uniform with a rifle slung on its back.
+// The built-in soldier: a low-poly humanoid in helmet and uniform, a rifle in its right hand (a prop),
+// and for some a flag in the left.
 #include <cmath>
 #include <numbers>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "model/attach_prop.h"
 #include "model/mesh_builder.h"
 #include "model/procedural_models.h"
 #include "model/seeded_variation.h"
@@ -197,29 +201,6 @@ void addLeg(SkinnedModel& m, const SkeletonBuilder& b, const Joints& j, int side
     addTube(m, foot);
 }
 
-// A rifle slung diagonally across the back, muzzle up behind the right shoulder.
-void addRifle(SkinnedModel& m, const Joints& j) {
-    const glm::vec3 along = glm::normalize(glm::vec3(-0.36f, 1.0f, 0.0f));
-    const glm::vec3 out = {0.0f, 0.0f, -1.0f};
-    const glm::vec3 below = glm::cross(out, along);  // completes a right-handed (along, below, out)
-    const glm::mat3 axes(along, below, out);
-    const glm::vec3 origin = {-0.04f, 1.17f, -0.155f};
-    auto part = [&](float a, float b, glm::vec3 half, std::uint32_t material) {
-        Box box;
-        box.center = origin + a * along + b * below;
-        box.halfExtent = half;
-        box.axes = axes;
-        box.material = material;
-        box.skin = rigid(j.chest);
-        addBox(m, box);
-    };
-    part(-0.38f, 0.01f, {0.12f, 0.045f, 0.02f}, Wood);    // stock
-    part(-0.12f, 0.0f, {0.15f, 0.035f, 0.025f}, Metal);   // receiver
-    part(-0.07f, 0.08f, {0.03f, 0.05f, 0.015f}, Metal);   // magazine
-    part(0.13f, 0.0f, {0.11f, 0.028f, 0.022f}, Wood);     // handguard
-    part(0.34f, 0.0f, {0.11f, 0.011f, 0.011f}, Metal);    // barrel
-}
-
 // Ammunition pouches on the front of the belt.
 void addPouches(SkinnedModel& m, const Joints& j) {
     for (float x : {-0.085f, 0.085f}) {
@@ -232,9 +213,23 @@ void addPouches(SkinnedModel& m, const Joints& j) {
     }
 }
 
+// The props, attached once the clips are made (they plant the feet on the body alone). The hands'
+// bind frames are the model's axes; a hand closes about 8 cm below its joint. The rifle is carried
+// muzzle a little down, as the walk swings it; the idle clip raises the right forearm so that the
+// same offset rests it on the shoulder (soldier_clips.cpp). One soldier in eight carries a flag.
+constexpr float kFlagShare = 0.125f;
+
+void addProps(SkinnedModel& soldier, glm::vec3 stretch) {
+    const glm::vec3 grip = glm::vec3(0.008f, -0.085f, 0.01f) * stretch;
+    const glm::mat4 rifle = glm::rotate(glm::translate(glm::mat4(1.0f), grip * glm::vec3(-1.0f, 1.0f, 1.0f)),
+                                        glm::radians(10.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+    attachProp(soldier, makeRifle(), "hand_r", rifle);
+    attachProp(soldier, makeFlag(), "hand_l", glm::translate(glm::mat4(1.0f), grip), kFlagShare);
+}
+
 }  // namespace
 
-SkinnedModel makeSoldier(std::uint32_t seed) {
+SkinnedModel makeSoldier(std::uint32_t seed, bool props) {
     // Proportions vary a little per seed: height by up to 3 %, build (width and depth) by up to 5 %.
     const float height = seededScale(seed, 0, 0.03f);
     const float build = seededScale(seed, 1, 0.05f);
@@ -251,11 +246,11 @@ SkinnedModel makeSoldier(std::uint32_t seed) {
         addArm(soldier, bones, joints, side);
         addLeg(soldier, bones, joints, side);
     }
-    addRifle(soldier, joints);
     addPouches(soldier, joints);
     stretchVertices(soldier, stretch);
     soldier.skeleton = bones.build(stretch);
     soldier.clips = makeSoldierClips(soldier);
+    if (props) addProps(soldier, stretch);
     computeBounds(soldier);
     return soldier;
 }

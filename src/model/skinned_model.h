@@ -35,7 +35,7 @@ struct SkinnedModel {
     // Bit m set: material m's colour is materialColors[m] times baseColorTexture at the vertex's uv
     // (glTF's baseColorFactor * baseColorTexture); clear: materialColors[m] alone.
     std::uint32_t texturedMaterials = 0;
-    // Axis-aligned bounds of the bind pose in model space (y is up).
+    // Axis-aligned bounds of the bind pose in model space (y is up), props left out (the body's).
     glm::vec3 boundsMin{0.0f};
     glm::vec3 boundsMax{0.0f};
 
@@ -51,6 +51,15 @@ struct SkinnedModel {
     // A sphere in model space holding every vertex in every pose of every clip (and the rest pose):
     // xyz centre, w radius (crowd/pose_bounds.h). Culling tests it; zero until computed.
     glm::vec4 poseSphere{0.0f};
+    // Rigid props attached to joints (model/attach_prop.h), at most MAX_PROPS: prop k is moved by its
+    // own joint (skeleton.propOfJoint == k + 1), a child of the joint it is attached to.
+    struct PropPart {
+        std::string name;
+        std::uint32_t joint = 0;       // the prop's own joint
+        std::uint32_t attachedTo = 0;  // the joint it hangs from
+        float share = 1.0f;            // of the characters that carry it when they do not choose
+    };
+    std::vector<PropPart> props;
 
     // The height the ground band of root-motion measurement scales with (model/measure_root_motion.h);
     // 0: height(). A mounted model keeps its mount's, so that it travels exactly as its mount alone.
@@ -62,7 +71,7 @@ struct SkinnedModel {
     int findClip(const std::string& clipName) const;
 };
 
-// Recomputes boundsMin/boundsMax from the vertices.
+// Recomputes boundsMin/boundsMax from the vertices, those of props (model/attach_prop.h) left out.
 void computeBounds(SkinnedModel& model);
 
 }  // namespace model

@@ -129,6 +129,11 @@ anim::Clip runClip(const SkinnedModel& soldier, const Rig& r) {
     });
 }
 
+// The right arm's angles at shoulder arms (degrees): upper arm forward and out, elbow bent.
+constexpr float kShoulderArmsUpperArm = 12.0f;
+constexpr float kShoulderArmsOut = 8.0f;
+constexpr float kShoulderArmsElbow = 118.0f;
+
 anim::Clip idleClip(const SkinnedModel& soldier, const Rig& r) {
     return bakeLoopingClip("idle", 3.0f, 32, soldier.skeleton, [&](float phase, std::span<anim::Transform> pose) {
         // One slow breath per loop lifts the chest and shoulders.
@@ -140,6 +145,10 @@ anim::Clip idleClip(const SkinnedModel& soldier, const Rig& r) {
             pose[r.upperArm[side]].rotation = bank(outward * 3.0f) * swing(1.5f * wave(phase, 1.0f, 0.2f));
             pose[r.forearm[side]].rotation = swing(8.0f);
         }
+        // Shoulder arms: the right forearm raised, the hand before the shoulder, so that the rifle it
+        // carries in the walk (muzzle forward) stands sloped up and back against the shoulder.
+        pose[r.upperArm[1]].rotation = bank(-kShoulderArmsOut) * swing(kShoulderArmsUpperArm + 1.0f * wave(phase, 1.0f, 0.2f));
+        pose[r.forearm[1]].rotation = swing(kShoulderArmsElbow);
         // Weight shifts from foot to foot: the pelvis slides and tilts, the legs lean to keep the feet put.
         const float shift = wave(phase, 1.0f, 0.25f);
         pose[r.hips].translation.x += 0.02f * shift;

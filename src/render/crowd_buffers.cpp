@@ -79,6 +79,7 @@ std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, st
         records[i].placement = glm::vec4(c.position, c.heading);
         records[i].tint = glm::vec4(c.tint, c.scale);
         records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, 0u);
+        records[i].pose.z = static_cast<float>(c.props);  // below 2^MAX_PROPS: exact
         crowd.poseRecord(i, crowd.epoch(), records[i]);  // near where it was advanced to, until a frame's pose
     }
     return records;

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "anim/local_to_model.h"
+#include "anim/props_carried.h"
+#include "model/attach_prop.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
 #include "gpu/barriers.h"
@@ -112,6 +114,7 @@ std::vector<gpu::BoneRows> impostorPoses(std::span<const model::SkinnedModel* co
         std::vector<anim::Transform> locals(skeleton.restPose);
         std::vector<glm::mat4> modelSpace(skeleton.jointCount());
         std::vector<gpu::BoneRows> pose(skeleton.jointCount());
+        const std::uint32_t carried = model::propsMostCarry(model);
         for (std::uint32_t clip = 0; clip < plan[m].cells.y; ++clip) {
             for (std::uint32_t frame = 0; frame < plan[m].cells.z; ++frame) {
                 // Frame k at phase k / frames of the clip, as a character at that phase samples it.
@@ -122,6 +125,10 @@ std::vector<gpu::BoneRows> impostorPoses(std::span<const model::SkinnedModel* co
                 }
                 anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, modelSpace);
                 anim::skinningMatrices(modelSpace, skeleton.inverseBind, glm::mat4(1.0f), pose);
+                // The props most of a crowd carries (model::propsMostCarry): one picture per pose (docs/props.md).
+                for (std::size_t j = 0; j < skeleton.propOfJoint.size(); ++j)
+                    if (!anim::jointCarried(skeleton.propOfJoint[j], carried))
+                        pose[j] = anim::collapsedBone(glm::vec3(modelSpace[j][3]));
                 bones.insert(bones.end(), pose.begin(), pose.end());
             }
         }

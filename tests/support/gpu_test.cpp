@@ -330,6 +330,12 @@ MixedCrowdMatch compareMixedCrowd(const app::HostDevice& context, const model::S
         c.tint = glm::vec3(0.85f + 0.05f * static_cast<float>(i));
         mixed.push_back(c);
     }
+    // The props each character carries when it does not choose hash its index, which differs in the
+    // one-model crowds: they take the mixed crowd's choice (docs/props.md).
+    {
+        const crowd::Crowd chosen({&a, &b}, mixed);
+        for (std::size_t i = 0; i < mixed.size(); ++i) mixed[i].props = chosen.characters()[i].props;
+    }
     auto only = [&](std::uint32_t model) {
         std::vector<crowd::Character> subset;
         for (crowd::Character c : mixed)

@@ -21,8 +21,8 @@ std::string inFlagWords(std::string message) {
     return message;
 }
 
-crowdgpu::Model loadNamed(const std::string& name, std::uint32_t seed, const std::string& assetRoot) {
-    if (name == "soldier") return crowdgpu::Model::soldier(seed);
+crowdgpu::Model loadNamed(const std::string& name, std::uint32_t seed, const std::string& assetRoot, bool props) {
+    if (name == "soldier") return crowdgpu::Model::soldier(seed, props);
     if (name == "horse") return crowdgpu::Model::horse(seed);
     if (name == "cavalry") return crowdgpu::Model::cavalry(seed);
     std::error_code error;
@@ -53,8 +53,8 @@ int resolveClip(const crowdgpu::Model& model, const std::string& clip) {
 }  // namespace
 
 crowdgpu::Model loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes,
-                          const std::string& assetRoot) {
-    crowdgpu::Model model = loadNamed(name, seed, assetRoot);
+                          const std::string& assetRoot, bool props) {
+    crowdgpu::Model model = loadNamed(name, seed, assetRoot, props);
     if (notes) notes->insert(notes->end(), model.notes().begin(), model.notes().end());
     return model;
 }
@@ -99,10 +99,10 @@ std::string modelNames(const CrowdModels& models) {
 }
 
 CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes,
-                       const std::string& assetRoot) {
+                       const std::string& assetRoot, bool props) {
     CrowdModels result;
     for (const auto& [name, weight] : parseModelList(list)) {
-        result.models.push_back(loadModel(name, seed, notes, assetRoot));
+        result.models.push_back(loadModel(name, seed, notes, assetRoot, props));
         result.weights.push_back(weight);
     }
     return result;
@@ -133,6 +133,7 @@ crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene)
     layout.depthRatio = scene.depthRatio;
     layout.scaleVariation = living ? 0.08f : 0.0f;
     layout.tintVariation = living ? 0.12f : 0.0f;
+    layout.props = scene.props;
     return crowdgpu::Crowd::grid(models.models, layout, scene.behaviour);
 }
 

@@ -21,8 +21,9 @@ class HostDevice;
 // Throws Error for anything else and for a file that cannot be loaded. Notes on what a glTF file had
 // that the character leaves out are appended to `notes` when given. A glTF file's external files
 // must lie inside `assetRoot` (--asset-root), or its own folder when empty.
+// `props` false: the built-in soldier without its props (--props off: what they cost).
 crowdgpu::Model loadModel(const std::string& name, std::uint32_t seed, std::vector<std::string>* notes = nullptr,
-                          const std::string& assetRoot = {});
+                          const std::string& assetRoot = {}, bool props = true);
 
 // The clip `clip` names (by name, or by index), or the model's default clip when `clip` is empty.
 // Throws Error listing the model's clips.
@@ -39,7 +40,7 @@ struct CrowdModels {
 // "soldier+horse": the models' own names, for reports.
 std::string modelNames(const CrowdModels& models);
 CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<std::string>* notes = nullptr,
-                       const std::string& assetRoot = {});
+                       const std::string& assetRoot = {}, bool props = true);
 
 // The crowd of the scene options: a grid (crowdgpu::Crowd::grid) of the models by weight, the clip
 // by name or index or random, doing the scene's behaviour (seeded by its seed). In a crowd of several

@@ -46,6 +46,8 @@ usage: crowd-bench [options]
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --events on|off      the GPU event buffer of the characters in view (default on; pass "events")
+  --props on|off       soldiers carry their rifle (and one in eight a flag); off: the soldier without
+                       props (default on; docs/props.md)
   --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
   --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default auto)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
@@ -300,7 +302,7 @@ int run(const BenchOptions& options, const std::string& command) {
     // Every model is loaded (and a bad one reported) before the device starts and progress is printed.
     std::vector<app::CrowdModels> crowds;
     for (const std::string& modelList : options.models)
-        crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot));
+        crowds.push_back(app::loadModels(modelList, options.seed, nullptr, options.assetRoot, options.scene.scene.props));
     checkHostMemory(crowds, options);
     app::HostDevice context({options.validation, options.device, {}, false});
     // Once, before any row: a sample count the device lacks would otherwise skip every configuration.

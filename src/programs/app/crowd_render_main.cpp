@@ -45,7 +45,7 @@ float parseSeconds(const std::string& text) {
 crowdgpu::Model loadAndNote(const app::RenderOptions& options) {
     std::vector<std::string> notes;
     crowdgpu::Model model = app::loadModel(app::parseModelList(options.scene.model).front().first,
-                                               options.scene.seed, &notes, options.scene.assetRoot);
+                                               options.scene.seed, &notes, options.scene.assetRoot, options.scene.props);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     return model;
 }
@@ -95,7 +95,7 @@ int run(const app::RenderOptions& options) {
 
     std::vector<std::string> notes;
     const app::CrowdModels models =
-        app::loadModels(options.scene.model, options.scene.seed, &notes, options.scene.assetRoot);
+        app::loadModels(options.scene.model, options.scene.seed, &notes, options.scene.assetRoot, options.scene.props);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     app::HostDevice context({options.validation, options.device, {}, false});
     crowdgpu::Crowd crowd = app::buildCrowd(models, options.scene);

@@ -35,6 +35,8 @@ usage: crowd-render [options]
                           threshold are drawn as camera-facing quads from an atlas baked at load time
                           (default off)
   --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
+  --props on|off          characters carry their models' props (the soldier's rifle, one in eight a
+                          flag; docs/props.md); off: none (default on)
   --impostor-blend on|off impostors blend the two nearest views and animation frames; off: the nearest
                           atlas cell, one texture fetch instead of four (default on)
   --events on|off         the GPU event buffer: clip events (footsteps) of the characters in view,
@@ -220,6 +222,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--lod") options.cull.lod = parseOnOff(flag, next());
         else if (flag == "--lod-thresholds") parseThresholds(flag, next(), options.cull);
         else if (flag == "--shadows") options.shadows = parseOnOff(flag, next());
+        else if (flag == "--props") options.scene.props = parseOnOff(flag, next());
         else if (flag == "--shadow-lod") options.cull.shadowLod = parseOnOff(flag, next());
         else if (flag == "--shadow-raster") {
             const std::string raster = next();

@@ -51,6 +51,7 @@ struct SceneOptions {
     std::string assetRoot;          // folder a glTF model's external files must lie in; "" = the model's own
     crowdgpu::Behaviour behaviour = crowdgpu::Behaviour::InPlace;  // what the characters do (crowdgpu/crowd.hpp)
     float depthRatio = 1.0f;        // the grid's rows over columns (a scene's; crowdgpu::GridLayout)
+    bool props = true;              // --props: characters carry their models' props (docs/props.md)
 };
 
 struct RenderOptions {

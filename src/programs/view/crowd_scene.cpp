@@ -26,7 +26,7 @@ app::RendererOptions CrowdScene::rendererOptions(crowdgpu::Method method, VkExte
 
 void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     std::vector<std::string> notes;
-    app::CrowdModels models = app::loadModels(scene.model, scene.seed, &notes, scene.assetRoot);
+    app::CrowdModels models = app::loadModels(scene.model, scene.seed, &notes, scene.assetRoot, scene.props);
     auto next = [&] {
         try {
             return std::make_unique<crowdgpu::Crowd>(app::buildCrowd(models, scene));

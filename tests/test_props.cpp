@@ -1,0 +1,281 @@
+// Props on joints (docs/props.md): a prop's skinned vertices are its joint's world transform times its
+// offset times its own vertices, by every skinning method; its pixels appear where the CPU projection of
+// those vertices puts them and vanish when a character does not carry it; a missing joint is one error.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/crowd_app.h"
+#include "app/crowd_renderer.h"
+#include "crowd/pose_bounds.h"
+#include "crowdgpu/crowdgpu.h"
+#include "crowdgpu/model.hpp"
+#include "gpu/error.h"
+#include "model/attach_prop.h"
+#include "model/lod_builder.h"
+#include "model/procedural_models.h"
+#include "skin/cpu_skinning.h"
+#include "support/gpu_test.h"
+
+namespace {
+
+using test::GpuTest;
+
+// An offset with every part a bug could drop: a rotation about a slanted axis, a uniform scale, a translation.
+glm::mat4 testOffset() {
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.05f, 0.12f, -0.07f));
+    m = glm::rotate(m, glm::radians(35.0f), glm::normalize(glm::vec3(1.0f, 2.0f, 0.5f)));
+    return glm::scale(m, glm::vec3(1.3f));
+}
+
+// The soldier with a third prop, a flag on its head at testOffset(), levels and sphere built again.
+struct SoldierWithTestProp {
+    model::SkinnedModel model = model::makeSoldier(1);
+    std::uint32_t propJoint = 0, head = 0;
+    SoldierWithTestProp() {
+        model::attachProp(model, model::makeFlag(), "head", testOffset());
+        propJoint = model.props.back().joint;
+        head = model.props.back().attachedTo;
+        model::buildLods(model);
+        model.poseSphere = crowd::computePoseSphere(model);
+    }
+};
+
+glm::dvec3 applyAffine(const anim::Affine& a, const glm::dvec3& p) {
+    const glm::dvec4 q(p, 1.0);
+    return {glm::dot(glm::dvec4(a.row0), q), glm::dot(glm::dvec4(a.row1), q), glm::dot(glm::dvec4(a.row2), q)};
+}
+
+std::vector<crowd::Character> fourCharacters(const model::SkinnedModel& m) {
+    std::vector<crowd::Character> characters(4);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        characters[i].clip = i % static_cast<std::uint32_t>(m.clips.size());
+        characters[i].timeOffset = 0.31f * static_cast<float>(i);
+        characters[i].position = glm::vec3(2.5f * static_cast<float>(i), 0.0f, 0.0f);
+        characters[i].heading = 0.7f * static_cast<float>(i);
+        characters[i].props = 0x7u;  // both of the soldier's props and the test's
+    }
+    return characters;
+}
+
+}  // namespace
+
+TEST_F(GpuTest, PropVerticesAreJointWorldTimesOffsetTimesLocalForEveryMethodThatStoresVertices) {
+    const SoldierWithTestProp s;
+    const model::SkinnedModel& m = s.model;
+    // The prop's own vertices, recovered from the bind pose through the head's bind transform and the
+    // test's offset (not through the prop joint the library made).
+    const glm::dmat4 toLocal = glm::inverse(glm::dmat4(glm::inverse(m.skeleton.inverseBind[s.head])) * glm::dmat4(testOffset()));
+    const glm::dmat4 offset(testOffset());
+    std::size_t checked = 0;
+    for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Static}) {
+        crowd::Crowd crowd(m, fourCharacters(m));
+        test::RendererOptions options;
+        options.size = {64, 64};
+        options.method = method;
+        options.cull.mode = render::CullMode::Off;
+        options.cull.lod = false;
+        test::TestRenderer renderer(*context, crowd, options);
+        const float time = 0.9f;
+        renderer.renderFrame(time);
+        renderer.finish();
+        double worst = 0.0;
+        for (std::uint32_t c = 0; c < crowd.size(); ++c) {
+            const test::ReadbackVertices gpu = test::readSkinnedCharacter(*context, renderer, c);
+            const anim::Affine head = crowd.jointWorld(c, s.head, time);
+            for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+                if (m.vertices[v].joints.x != s.propJoint) continue;
+                const glm::dvec3 local(toLocal * glm::dvec4(glm::dvec3(glm::vec3(m.vertices[v].position)), 1.0));
+                const glm::dvec3 expected = applyAffine(head, glm::dvec3(offset * glm::dvec4(local, 1.0)));
+                worst = std::max(worst, glm::length(glm::dvec3(gpu.positions[v]) - expected));
+                ++checked;
+            }
+        }
+        // float32 skinning a few metres from the origin: 1e-5 of the height, as the skinning tests allow.
+        EXPECT_LE(worst, 1e-5 * m.height()) << skin::methodName(method);
+    }
+    EXPECT_EQ(checked, 4u * 4u * model::makeFlag().vertices.size());
+}
+
+TEST(Props, CpuPalettesPlaceThePropAtJointTimesOffsetAndCollapseItWhenNotCarried) {
+    const SoldierWithTestProp s;
+    const model::SkinnedModel& m = s.model;
+    std::vector<crowd::Character> characters = fourCharacters(m);
+    characters[1].props = 0x3u;  // not the test's prop
+    crowd::Crowd crowd(m, characters);
+    const glm::dmat4 toLocal = glm::inverse(glm::dmat4(glm::inverse(m.skeleton.inverseBind[s.head])) * glm::dmat4(testOffset()));
+    std::vector<gpu::BoneRows> bones(m.skeleton.jointCount());
+    for (double time : {0.0, 0.4, 1.7}) {
+        for (std::uint32_t c = 0; c < 2; ++c) {
+            crowd.animateCharacter(c, time, bones);
+            const std::vector<skin::CpuSkinnedVertex> skinned = skin::skinOnCpu(m, bones);
+            const anim::Affine head = crowd.jointWorld(c, s.head, time);
+            const glm::dvec3 joint = applyAffine(head, glm::dvec3(glm::dmat4(testOffset())[3]));
+            for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+                if (m.vertices[v].joints.x != s.propJoint) continue;
+                const glm::dvec3 local(toLocal * glm::dvec4(glm::dvec3(glm::vec3(m.vertices[v].position)), 1.0));
+                const glm::dvec3 carried = applyAffine(head, glm::dvec3(glm::dmat4(testOffset()) * glm::dvec4(local, 1.0)));
+                // Carried: where the joint and offset put it; not carried: on the prop's joint, a point.
+                const glm::dvec3 expected = c == 0 ? carried : joint;
+                EXPECT_LE(glm::length(skinned[v].position - expected), 1e-5 * m.height()) << "character " << c << " t " << time;
+            }
+        }
+    }
+}
+
+TEST(Props, AMissingJointIsOneErrorNamingTheModelAndTheJoint) {
+    const crowdgpu::Model soldier = crowdgpu::Model::soldier();
+    crowdgpu::PropAttachment tail{crowdgpu::Prop::rifle(), "tail"};
+    try {
+        soldier.withProps({tail});
+        FAIL() << "a prop on a missing joint was accepted";
+    } catch (const crowdgpu::Error& error) {
+        EXPECT_EQ(error.code(), crowdgpu::ErrorCode::InvalidArgument);
+        const std::string message = error.what();
+        EXPECT_NE(message.find("soldier"), std::string::npos) << message;
+        EXPECT_NE(message.find("'tail'"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+    crowdgpu::PropAttachment sheared{crowdgpu::Prop::flag(), "hand_l"};
+    sheared.offset[1] = 0.5f;  // shear: normals would be wrong
+    EXPECT_THROW(soldier.withProps({sheared}), crowdgpu::Error);
+    // A good one: a joint more, named after the prop, and the triangles of the prop.
+    const crowdgpu::Model carrying = soldier.withProps({{crowdgpu::Prop::flag(), "head"}});
+    EXPECT_EQ(carrying.jointCount(), soldier.jointCount() + 1);
+    EXPECT_EQ(carrying.triangleCount(), soldier.triangleCount() + crowdgpu::Prop::flag().triangleCount());
+    EXPECT_EQ(carrying.propCount(), soldier.propCount() + 1);
+    EXPECT_EQ(carrying.jointName(carrying.propJoint(carrying.propCount() - 1)), "flag_2");  // "flag" is taken
+}
+
+TEST(Props, TheCApiRefusesAMissingJointInOneLine) {
+    crowdgpu_model soldier = nullptr, carrying = nullptr;
+    ASSERT_EQ(crowdgpu_model_soldier(1, &soldier), CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_with_prop(soldier, "flag", "tail", nullptr, 1.0f, &carrying), CROWDGPU_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(carrying, nullptr);
+    const std::string message = crowdgpu_last_error();
+    EXPECT_NE(message.find("'tail'"), std::string::npos) << message;
+    EXPECT_NE(message.find("soldier"), std::string::npos) << message;
+    EXPECT_EQ(crowdgpu_model_with_prop(soldier, "banana", "head", nullptr, 1.0f, &carrying), CROWDGPU_ERROR_INVALID_ARGUMENT);
+    ASSERT_EQ(crowdgpu_model_with_prop(soldier, "flag", "head", nullptr, 0.5f, &carrying), CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_find_joint(carrying, "flag_2"), crowdgpu_model_find_joint(soldier, "flag") + 1);
+    crowdgpu_model_destroy(carrying);
+    crowdgpu_model_destroy(soldier);
+}
+
+TEST(Props, OneSoldierInEightCarriesAFlagByTheSeedAndEveryOneARifle) {
+    const model::SkinnedModel soldier = model::makeSoldier(1);
+    ASSERT_EQ(soldier.props.size(), 2u);
+    EXPECT_EQ(soldier.props[0].name, "rifle");
+    EXPECT_EQ(soldier.props[1].name, "flag");
+    std::uint32_t flags = 0;
+    const std::uint32_t count = 8000;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const std::uint32_t carried = model::defaultPropsCarried(soldier, 7, i);
+        EXPECT_EQ(carried & 1u, 1u);
+        flags += carried >> 1 & 1u;
+        EXPECT_EQ(carried, model::defaultPropsCarried(soldier, 7, i)) << "deterministic";
+    }
+    // 1,000 expected; a binomial's standard deviation is about 30.
+    EXPECT_NEAR(static_cast<double>(flags), count / 8.0, 120.0);
+    EXPECT_NE(model::defaultPropsCarried(soldier, 7, 3) >> 1, 2u);  // bits past the model's props stay clear
+}
+
+namespace {
+
+struct PropShot {
+    app::Rgba8Image image;
+    glm::mat4 viewProjection;
+};
+
+// One soldier carrying `props`, standing in front of a camera at its left (the flag's side), no shadows
+// (a prop's shadow would fall outside its own projection).
+PropShot renderCarrying(const gpu::VulkanContext& context, const model::SkinnedModel& soldier, std::uint32_t props,
+                        skin::Method method, float time) {
+    crowd::Character c;
+    c.clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
+    c.props = props;
+    crowd::Crowd crowd(soldier, {c});
+    test::RendererOptions options;
+    options.size = {160, 120};
+    options.method = method;
+    options.shadows = false;
+    test::TestRenderer renderer(context, crowd, options);
+    renderer.camera.eye = {2.6f, 1.6f, 2.2f};
+    renderer.camera.target = {0.0f, 1.0f, 0.0f};
+    renderer.renderFrame(time);
+    return {renderer.readback(), test::internalCamera(renderer.camera).viewProjection(160.0f / 120.0f)};
+}
+
+// Pixels (row-major, as the image) covered by the CPU projection of the triangles whose vertices all
+// belong to joint `joint`, grown by one pixel (edges rasterize either way).
+std::vector<bool> projectedCover(const model::SkinnedModel& m, const std::vector<skin::CpuSkinnedVertex>& posed,
+                                 std::uint32_t joint, const glm::mat4& viewProjection, int width, int height) {
+    std::vector<bool> cover(static_cast<std::size_t>(width * height), false);
+    auto pixel = [&](const glm::dvec3& p) {
+        const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(p), 1.0f);
+        return glm::vec2((clip.x / clip.w * 0.5f + 0.5f) * width, (clip.y / clip.w * 0.5f + 0.5f) * height);
+    };
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+        const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+        if (m.vertices[a].joints.x != joint || m.vertices[b].joints.x != joint || m.vertices[c].joints.x != joint) continue;
+        const glm::vec2 p0 = pixel(posed[a].position), p1 = pixel(posed[b].position), p2 = pixel(posed[c].position);
+        auto edge = [](glm::vec2 u, glm::vec2 v, glm::vec2 q) { return (v.x - u.x) * (q.y - u.y) - (v.y - u.y) * (q.x - u.x); };
+        const float area = edge(p0, p1, p2);
+        if (area == 0.0f) continue;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const glm::vec2 q(x + 0.5f, y + 0.5f);
+                const float w0 = edge(p1, p2, q) / area, w1 = edge(p2, p0, q) / area, w2 = edge(p0, p1, q) / area;
+                if (w0 >= 0 && w1 >= 0 && w2 >= 0) cover[static_cast<std::size_t>(y * width + x)] = true;
+            }
+    }
+    std::vector<bool> grown = cover;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            if (cover[static_cast<std::size_t>(y * width + x)])
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int u = x + dx, v = y + dy;
+                        if (u >= 0 && v >= 0 && u < width && v < height) grown[static_cast<std::size_t>(v * width + u)] = true;
+                    }
+    return grown;
+}
+
+}  // namespace
+
+TEST_F(GpuTest, APropsPixelsAppearWhereItsCpuProjectionFallsAndVanishWhenNotCarried) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    const std::uint32_t flagJoint = soldier.props[1].joint;
+    const float time = 0.3f;
+    // Where the CPU puts the flag: the crowd's CPU bones, skinned by the CPU reference.
+    crowd::Character c;
+    c.clip = static_cast<std::uint32_t>(soldier.findClip("walk"));
+    c.props = 0x3u;
+    crowd::Crowd reference(soldier, {c});
+    std::vector<gpu::BoneRows> bones(soldier.skeleton.jointCount());
+    reference.animateCharacter(0, time, bones);
+    const std::vector<skin::CpuSkinnedVertex> posed = skin::skinOnCpu(soldier, bones);
+    for (skin::Method method : skin::allMethods()) {
+        const PropShot with = renderCarrying(*context, soldier, 0x3u, method, time);
+        const PropShot without = renderCarrying(*context, soldier, 0x1u, method, time);
+        const int w = static_cast<int>(with.image.width), h = static_cast<int>(with.image.height);
+        const std::vector<bool> cover = projectedCover(soldier, posed, flagJoint, with.viewProjection, w, h);
+        std::size_t differing = 0, inside = 0, covered = 0;
+        for (std::size_t i = 0; i < cover.size(); ++i) {
+            bool differs = false;
+            for (int ch = 0; ch < 3; ++ch)
+                differs = differs || std::abs(int(with.image.pixels[4 * i + ch]) - int(without.image.pixels[4 * i + ch])) > 8;
+            differing += differs;
+            inside += differs && cover[i];
+            covered += cover[i];
+        }
+        // The flag shows (a 2 m pole and its cloth at this distance: hundreds of pixels), only inside its
+        // projection (the image is stored top row first; the projection's y is flipped the same way).
+        EXPECT_GT(differing, 150u) << skin::methodName(method);
+        EXPECT_GE(static_cast<double>(inside), 0.98 * static_cast<double>(differing)) << skin::methodName(method);
+        EXPECT_GE(static_cast<double>(differing), 0.4 * static_cast<double>(covered)) << skin::methodName(method);
+    }
+}
