@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/footsteps.h"
 #include "model/mesh_builder.h"
 #include "model/procedural_models.h"
 #include "model/seeded_variation.h"
@@ -257,6 +258,8 @@ SkinnedModel makeSoldier(std::uint32_t seed) {
     soldier.skeleton = bones.build(stretch);
     soldier.clips = makeSoldierClips(soldier);
     computeBounds(soldier);
+    // Last, on the finished mesh and clips: footsteps are found where the skinned feet touch down.
+    attachFootsteps(soldier, {"foot_l", "foot_r"});
     return soldier;
 }
 
