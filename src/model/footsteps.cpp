@@ -45,96 +45,125 @@ std::vector<std::uint32_t> footVertices(const SkinnedModel& model, std::uint32_t
     return result;
 }
 
-// The given vertices skinned at `time` into the clip and carried by its root motion: where they are
-// over the ground the character walks on.
-std::vector<glm::vec3> groundPositions(const SkinnedModel& model, const anim::Clip& clip, const anim::RootMotion& root,
-                                       const std::vector<std::uint32_t>& vertices, float time) {
+// The skinning matrices (model space, joint matrix times inverse bind) of the clip at `time`.
+std::vector<glm::mat4> skinMatrices(const SkinnedModel& model, const anim::Clip& clip, float time) {
     const anim::Skeleton& skeleton = model.skeleton;
     std::vector<anim::Transform> locals(skeleton.jointCount());
     std::vector<glm::mat4> global(skeleton.jointCount());
     anim::sampleClip(clip, time, skeleton.restPose, locals);
     anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, global);
     for (std::size_t j = 0; j < global.size(); ++j) global[j] = global[j] * skeleton.inverseBind[j];
-    const glm::vec2 carried = root.at(time / clip.duration);
-    std::vector<glm::vec3> positions;
-    positions.reserve(vertices.size());
+    return global;
+}
+
+// The given vertices skinned by `matrices`, in model space (the clip in place).
+std::vector<glm::vec3> skinVertices(const SkinnedModel& model, const std::vector<glm::mat4>& matrices,
+                                    const std::vector<std::uint32_t>& vertices) {
+    std::vector<glm::vec3> out;
+    out.reserve(vertices.size());
     for (std::uint32_t i : vertices) {
         const gpu::SkinVertex& v = model.vertices[i];
         glm::vec4 p(0.0f);
-        for (int k = 0; k < 4; ++k) p += v.weights[k] * (global[v.joints[k]] * v.position);
-        positions.emplace_back(p.x + carried.x, p.y, p.z + carried.y);
+        for (int k = 0; k < 4; ++k) p += v.weights[k] * (matrices[v.joints[k]] * v.position);
+        out.emplace_back(p);
     }
-    return positions;
+    return out;
 }
 
-// One foot over the sampled cycle: its lowest vertex's height and that vertex's speed over the ground.
+// One foot over a cycle sampled at `steps` evenly spaced poses: per pose its lowest vertex's height
+// and that vertex's speed over the ground.
 struct FootTrack {
     std::vector<float> height, speed;
 };
+
+// poses[i][k]: the foot's vertex k at step i in model space. The ground moves under the clip by its
+// root motion, so a vertex's place over the ground is its model-space place plus the root motion
+// at that phase (whole strides added past the cycle's end).
+FootTrack trackFoot(const std::vector<std::vector<glm::vec3>>& poses, const anim::RootMotion& root, float dt) {
+    const int steps = static_cast<int>(poses.size());
+    auto overGround = [&](int i, std::size_t k) {
+        const int wrapped = ((i % steps) + steps) % steps;
+        const float phase = static_cast<float>(i) / static_cast<float>(steps);
+        const glm::vec2 carried = root.at(phase);  // whole cycles add whole strides
+        return poses[static_cast<std::size_t>(wrapped)][k] + glm::vec3(carried.x, 0.0f, carried.y);
+    };
+    FootTrack track{std::vector<float>(poses.size()), std::vector<float>(poses.size())};
+    for (int i = 0; i < steps; ++i) {
+        const std::vector<glm::vec3>& pose = poses[static_cast<std::size_t>(i)];
+        const std::size_t lowest = static_cast<std::size_t>(
+            std::min_element(pose.begin(), pose.end(), [](const glm::vec3& a, const glm::vec3& b) { return a.y < b.y; }) -
+            pose.begin());
+        const glm::vec3 d = overGround(i + 1, lowest) - overGround(i - 1, lowest);
+        track.height[static_cast<std::size_t>(i)] = pose[lowest].y;
+        track.speed[static_cast<std::size_t>(i)] = std::hypot(d.x, d.z) / (2.0f * dt);
+    }
+    return track;
+}
+
+// The steps (indices) at which a tracked foot touches down, going once round the cycle from its
+// highest moment (in the air).
+std::vector<int> touchdownSteps(const FootTrack& track, float downBand, float stopped) {
+    const int steps = static_cast<int>(track.height.size());
+    const float ground = *std::min_element(track.height.begin(), track.height.end());
+    const auto highest = std::max_element(track.height.begin(), track.height.end());
+    const float lift = *highest - ground;
+    std::vector<int> result;
+    bool up = true;
+    for (int n = 0, start = static_cast<int>(highest - track.height.begin()); n < steps; ++n) {
+        const int i = (start + n) % steps;
+        const float above = track.height[static_cast<std::size_t>(i)] - ground;
+        if (up && above <= downBand && track.speed[static_cast<std::size_t>(i)] <= stopped) {
+            result.push_back(i);
+            up = false;
+        } else if (!up && above > kUpFraction * lift) {
+            up = true;
+        }
+    }
+    return result;
+}
+
+// How far a foot's lowest vertex rises over the cycle.
+float liftOf(const std::vector<std::vector<glm::vec3>>& poses) {
+    float lowest = 1e30f, highest = -1e30f;
+    for (const std::vector<glm::vec3>& pose : poses) {
+        float y = 1e30f;
+        for (const glm::vec3& p : pose) y = std::min(y, p.y);
+        lowest = std::min(lowest, y), highest = std::max(highest, y);
+    }
+    return highest - lowest;
+}
 
 }  // namespace
 
 std::vector<anim::ClipEvent> findFootsteps(const SkinnedModel& model, const anim::Clip& clip,
                                            const std::vector<std::uint32_t>& feet) {
     std::vector<anim::ClipEvent> events;
-    if (!(clip.duration > 0.0f) || feet.empty()) return events;
+    if (!(clip.duration > 0.0f)) return events;
     const int steps = std::max(kMinSteps, static_cast<int>(std::ceil(clip.duration / kLongestStep)));
     const float dt = clip.duration / static_cast<float>(steps);
-    const anim::RootMotion root = measureRootMotion(model, clip);
     const float height = model.height();
+    // Each foot's vertices at every step, in model space: heights do not depend on root motion, so
+    // feet that never lift (idle) are known before it is measured.
+    std::vector<std::vector<glm::mat4>> matrices(static_cast<std::size_t>(steps));
+    for (int i = 0; i < steps; ++i) matrices[static_cast<std::size_t>(i)] = skinMatrices(model, clip, dt * static_cast<float>(i));
+    std::vector<std::vector<std::vector<glm::vec3>>> footPoses;
+    std::vector<std::uint32_t> lifting;
+    for (std::uint32_t foot : feet) {
+        const std::vector<std::uint32_t> vertices = footVertices(model, foot);
+        if (vertices.empty()) continue;
+        std::vector<std::vector<glm::vec3>> poses(static_cast<std::size_t>(steps));
+        for (std::size_t i = 0; i < poses.size(); ++i) poses[i] = skinVertices(model, matrices[i], vertices);
+        if (liftOf(poses) <= kLeastLift * height) continue;  // never lifted: no steps
+        footPoses.push_back(std::move(poses));
+        lifting.push_back(foot);
+    }
+    if (lifting.empty()) return events;
+    const anim::RootMotion root = measureRootMotion(model, clip);
     const float bodySpeed = glm::length(root.stride) / clip.duration;
     const float stopped = bodySpeed > 0.0f ? kStoppedFraction * bodySpeed : kStoppedInPlace * height;
-
-    std::vector<std::vector<std::uint32_t>> footSets;
-    std::vector<std::uint32_t> all;
-    for (std::uint32_t foot : feet) {
-        footSets.push_back(footVertices(model, foot));
-        all.insert(all.end(), footSets.back().begin(), footSets.back().end());
-    }
-    // Ground positions of every foot vertex at every step (the last step wraps to the first).
-    std::vector<std::vector<glm::vec3>> poses(static_cast<std::size_t>(steps));
-    for (int i = 0; i < steps; ++i) poses[static_cast<std::size_t>(i)] = groundPositions(model, clip, root, all, dt * static_cast<float>(i));
-    const glm::vec2 stride = root.stride;
-    auto at = [&](int i, std::size_t k) {
-        // Past the cycle's end the ground positions carry on by whole strides.
-        const int wrapped = ((i % steps) + steps) % steps;
-        const float cycles = static_cast<float>((i - wrapped) / steps);
-        const glm::vec3 p = poses[static_cast<std::size_t>(wrapped)][k];
-        return p + glm::vec3(stride.x, 0.0f, stride.y) * cycles;
-    };
-
-    std::size_t offset = 0;
-    for (std::size_t f = 0; f < feet.size(); ++f) {
-        const std::size_t count = footSets[f].size();
-        if (count == 0) continue;
-        FootTrack track{std::vector<float>(static_cast<std::size_t>(steps)), std::vector<float>(static_cast<std::size_t>(steps))};
-        for (int i = 0; i < steps; ++i) {
-            std::size_t lowest = offset;
-            for (std::size_t k = offset; k < offset + count; ++k)
-                if (at(i, k).y < at(i, lowest).y) lowest = k;
-            const glm::vec3 d = at(i + 1, lowest) - at(i - 1, lowest);
-            track.height[static_cast<std::size_t>(i)] = at(i, lowest).y;
-            track.speed[static_cast<std::size_t>(i)] = std::hypot(d.x, d.z) / (2.0f * dt);
-        }
-        offset += count;
-        const float ground = *std::min_element(track.height.begin(), track.height.end());
-        const auto highest = std::max_element(track.height.begin(), track.height.end());
-        const float lift = *highest - ground;
-        if (lift <= kLeastLift * height) continue;  // never lifted: no steps
-        // From the foot's highest moment (in the air), once round the cycle.
-        const int start = static_cast<int>(highest - track.height.begin());
-        bool up = true;
-        for (int n = 0; n < steps; ++n) {
-            const std::size_t i = static_cast<std::size_t>((start + n) % steps);
-            const float above = track.height[i] - ground;
-            if (up && above <= kDownBand * height && track.speed[i] <= stopped) {
-                events.push_back({kFootstepEvent, dt * static_cast<float>(i), static_cast<std::int32_t>(feet[f])});
-                up = false;
-            } else if (!up && above > kUpFraction * lift) {
-                up = true;
-            }
-        }
-    }
+    for (std::size_t f = 0; f < lifting.size(); ++f)
+        for (int i : touchdownSteps(trackFoot(footPoses[f], root, dt), kDownBand * height, stopped))
+            events.push_back({kFootstepEvent, dt * static_cast<float>(i), static_cast<std::int32_t>(lifting[f])});
     std::sort(events.begin(), events.end(), [](const anim::ClipEvent& a, const anim::ClipEvent& b) { return a.time < b.time; });
     return events;
 }
