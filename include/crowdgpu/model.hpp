@@ -17,7 +17,8 @@ namespace detail { struct ModelData; }
 class Model {
 public:
     // The built-in soldier (about 1.8 m; clips walk, run, idle, wave, ...) and horse; `seed` varies
-    // their proportions. Costs a few milliseconds (mesh, clips, LODs, pose sphere).
+    // their proportions. Costs a few tens of milliseconds (mesh, clips and their footsteps, LODs,
+    // pose sphere).
     static Model soldier(std::uint32_t seed = 1);
     static Model horse(std::uint32_t seed = 1);
     // A skinned glTF 2.0 character (.gltf or .glb). External buffers and images must lie inside
