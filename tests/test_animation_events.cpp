@@ -214,6 +214,41 @@ TEST(AnimationEvents, CApiGivesTheCrowdsEventsAndRefusesTooSmallABuffer) {
     crowdgpu_model_destroy(horse);
 }
 
+TEST(AnimationEvents, EveryFramesWindowIsAnsweredInALargeMillingCrowd) {
+    // 10,000 milling soldiers: some characters replan twice within a frame (entering an episode whose
+    // first segment lasts a few milliseconds). Every frame's window is still answered, and the events
+    // are those of the same crowd stepped at 144 Hz; a joint inside such a window is known too.
+    crowdgpu::GridLayout layout;
+    layout.count = 10000;
+    auto run = [&](double step, std::vector<crowdgpu::Event>& all) {
+        crowdgpu::Crowd crowd = crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout, crowdgpu::Behaviour::Mill);
+        const std::vector<std::uint32_t> everybody = everyone(crowd);
+        std::vector<crowdgpu::Event> window;
+        crowd.advanceTo(30.0);
+        std::uint32_t refused = 0;
+        for (std::uint32_t k = 1; k * step <= 1.0 + 1e-9; ++k) {
+            const double from = 30.0 + (k - 1) * step, to = 30.0 + k * step;
+            crowd.advanceTo(to);
+            try {
+                crowd.events(everybody.data(), everybody.size(), from, to, window);
+                float rows[12];
+                for (const crowdgpu::Event& e : window) crowd.jointWorld(e.character, 0, from + 1e-6, rows);
+            } catch (const crowdgpu::Error& e) {
+                if (refused++ == 0) ADD_FAILURE() << step << " s steps: " << e.what();
+                continue;
+            }
+            all.insert(all.end(), window.begin(), window.end());
+        }
+        EXPECT_EQ(refused, 0u) << step << " s steps";
+        std::stable_sort(all.begin(), all.end(), [](const crowdgpu::Event& a, const crowdgpu::Event& b) { return a.character < b.character; });
+    };
+    std::vector<crowdgpu::Event> at60, at144;
+    run(1.0 / 60.0, at60);
+    run(1.0 / 144.0, at144);
+    EXPECT_GT(at60.size(), 1000u);
+    EXPECT_TRUE(at60 == at144);
+}
+
 TEST(AnimationEvents, BadCharacterOrForgottenWindowIsInvalidArgument) {
     const crowdgpu::Model soldier = crowdgpu::Model::soldier(1);
     crowdgpu::GridLayout layout;
