@@ -4,7 +4,9 @@
 # 1, 4 and every core's threads; twice, so drift shows. Prints the tables; writes $OUT/events.tgz
 # (outputs, commands, lscpu).
 #
-# Expects event-bench in .devbin/ (carried: cp build/event-bench .devbin/); it needs no Vulkan device.
+# Expects event-bench in .devbin/ with the shared libraries it loads (carried; the same three as
+# crowd-bench's, docs/embedding-example.md: cp build/event-bench .devbin/ and cp -L libtinygltf.so.2d,
+# libmeshoptimizer.so.2d, libstb.so.0 from /lib/x86_64-linux-gnu); it needs no Vulkan device.
 #   on the H100:      bash bench/run_events.sh
 #   here (2 cores):   COUNT=10000 FRAMES=30 THREADS=1,2 bash bench/run_events.sh
 # COUNT (100000), FRAMES (120: event-bench's --frames), THREADS (1,4,<cores>: its --threads).
@@ -16,6 +18,7 @@ threads=${THREADS:-1,4,$(nproc)}
 device=  # CPU only: no device to find
 bin=$PWD/.devbin
 [[ -x $bin/event-bench ]] || bin=$PWD/build  # here: the build folder
+[[ -x $bin/event-bench ]] || { echo "run_events: no event-bench in .devbin/ or build/"; exit 1; }
 res=/tmp/events
 out=${OUT:-/tmp/out}
 probe() { "$bin/event-bench" --count 16 --frames 1 --threads 1 >"$res/probe.txt" 2>&1; }
