@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <string>
 #include <thread>
 #include <vector>
@@ -179,6 +180,9 @@ int main(int argc, char** argv) {
                             o.frames + 10, r.refusal.c_str());
     } catch (const crowdgpu::Error& error) {
         std::fprintf(stderr, "event-bench: %s\n", error.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "event-bench: out of host memory for %u soldiers\n", o.count);
         return 1;
     }
     if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
