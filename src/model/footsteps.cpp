@@ -18,8 +18,9 @@ constexpr float kLongestStep = 0.002f;  // seconds
 // Touchdown: the foot's lowest vertex within kDownBand of the lowest it gets over the cycle (a
 // fraction of the model's height: 9 mm on the soldier) and moving over the ground at under
 // kStoppedFraction of the body's mean speed. A foot must then rise past kUpFraction of its highest
-// lift before it can touch down again: the hysteresis that keeps a heel strike and the toes coming
-// down after it, or a hoof that bobs under a rocking gallop, one touchdown.
+// lift before it can touch down again: the hysteresis that makes a foot meeting the ground twice in
+// one stance (the soldier's walk re-armed at 5 % of the lift; a galloping hind hoof that bobs up 8 cm)
+// one touchdown.
 constexpr float kDownBand = 0.005f;
 constexpr float kStoppedFraction = 0.1f;
 constexpr float kStoppedInPlace = 0.005f;  // model heights per second, for clips that do not travel

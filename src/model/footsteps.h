@@ -14,7 +14,7 @@ namespace model {
 // The name every footstep event carries; its ClipEvent::joint says which foot.
 inline constexpr const char* kFootstepEvent = "footstep";
 
-// The touchdowns of each foot in `feet` (joints; a foot is the joint and the joints under it) over
+// The touchdowns of each foot in `feet` (joints of the model; a foot is the joint and the joints under it) over
 // one cycle of `clip`: one event per foot per step it takes, none for a foot that never leaves the
 // ground (idle). In time order.
 std::vector<anim::ClipEvent> findFootsteps(const SkinnedModel& model, const anim::Clip& clip,
