@@ -206,6 +206,33 @@ int main(void) {
            crowdgpu_last_error());
     const int32_t hand = crowdgpu_model_find_joint(soldier, "hand_r");
     EXPECT(hand >= 0 && crowdgpu_model_find_joint(soldier, "tail") == -1, "find_joint: hand_r %d", hand);
+    /* The walk's footsteps: one per foot, named "footstep", at the feet, within the cycle. */
+    const int32_t walk = crowdgpu_model_find_clip(soldier, "walk");
+    uint32_t steps = 0;
+    EXPECT(crowdgpu_model_event_count(soldier, (uint32_t)walk, &steps) == CROWDGPU_OK && steps == 2, "walk events %u: %s",
+           steps, crowdgpu_last_error());
+    const int32_t feet[2] = {crowdgpu_model_find_joint(soldier, "foot_l"), crowdgpu_model_find_joint(soldier, "foot_r")};
+    int32_t step_joints[2] = {-1, -1};
+    for (uint32_t e = 0; e < steps && e < 2; ++e) {
+        const char* name = NULL;
+        float seconds = -1.0f;
+        EXPECT(crowdgpu_model_event_name(soldier, (uint32_t)walk, e, &name) == CROWDGPU_OK && name &&
+                   strcmp(name, "footstep") == 0,
+               "walk event %u named %s", e, name ? name : "(none)");
+        EXPECT(crowdgpu_model_event_time(soldier, (uint32_t)walk, e, &seconds) == CROWDGPU_OK && seconds >= 0.0f &&
+                   seconds <= 1.1f,
+               "walk event %u at %f s", e, seconds);
+        EXPECT(crowdgpu_model_event_joint(soldier, (uint32_t)walk, e, &step_joints[e]) == CROWDGPU_OK, "event joint: %s",
+               crowdgpu_last_error());
+    }
+    EXPECT((step_joints[0] == feet[0] && step_joints[1] == feet[1]) || (step_joints[0] == feet[1] && step_joints[1] == feet[0]),
+           "footsteps at joints %d and %d, feet %d and %d", step_joints[0], step_joints[1], feet[0], feet[1]);
+    const char* no_name = NULL;
+    EXPECT(crowdgpu_model_event_name(soldier, (uint32_t)walk, steps, &no_name) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               no_name == NULL && strlen(crowdgpu_last_error()) > 0,
+           "an event past the last");
+    EXPECT(crowdgpu_model_event_count(soldier, 99, &steps) == CROWDGPU_ERROR_INVALID_ARGUMENT, "events of clip 99");
+    EXPECT(crowdgpu_model_event_count(NULL, 0, &steps) == CROWDGPU_ERROR_INVALID_ARGUMENT, "events of no model");
     crowdgpu_model_destroy(soldier); /* the crowd keeps its models */
     if (!crowd) return 1;
     EXPECT(crowdgpu_crowd_size(crowd) == 16, "crowd size %u", crowdgpu_crowd_size(crowd));
@@ -216,6 +243,48 @@ int main(void) {
     EXPECT(hand_rows[7] > 0.5f && hand_rows[7] < 1.5f, "hand at height %f", hand_rows[7]);
     EXPECT(crowdgpu_crowd_joint_world(crowd, 16, 0, 0.5, hand_rows) == CROWDGPU_ERROR_INVALID_ARGUMENT,
            "joint_world of a character the crowd lacks");
+
+    /* Events of the whole crowd over two seconds: asked for the count first, then fetched; each
+     * character's in time order within the window; one call is the two halves of the window. */
+    EXPECT(crowdgpu_crowd_advance_to(crowd, 2.0) == CROWDGPU_OK, "advance: %s", crowdgpu_last_error());
+    uint32_t everyone[16];
+    for (uint32_t c = 0; c < 16; ++c) everyone[c] = c;
+    uint32_t fired = 0, first_half = 0, second_half = 0;
+    EXPECT(crowdgpu_crowd_events(crowd, everyone, 16, 0.0, 2.0, NULL, 0, &fired) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               fired > 16 * 2,
+           "events counted: %u", fired);
+    crowdgpu_event events[256], halves[256];
+    EXPECT(fired <= 256 && crowdgpu_crowd_events(crowd, everyone, 16, 0.0, 2.0, events, 256, &fired) == CROWDGPU_OK,
+           "events: %s", crowdgpu_last_error());
+    EXPECT(crowdgpu_crowd_events(crowd, everyone, 16, 0.0, 1.0, halves, 256, &first_half) == CROWDGPU_OK &&
+               crowdgpu_crowd_events(crowd, everyone, 16, 1.0, 2.0, halves + first_half, 256 - first_half,
+                                     &second_half) == CROWDGPU_OK &&
+               first_half + second_half == fired,
+           "halves %u + %u of %u events", first_half, second_half, fired);
+    for (uint32_t i = 0; i < fired && i < 256; ++i) {
+        const crowdgpu_event* e = &events[i];
+        EXPECT(e->character < 16 && e->clip == (uint32_t)walk && e->event < 2 && e->time > 0.0 && e->time <= 2.0,
+               "event %u: character %u clip %u event %u at %f", i, e->character, e->clip, e->event, e->time);
+        if (i > 0) {
+            const crowdgpu_event* before = &events[i - 1];
+            EXPECT(before->character < e->character || (before->character == e->character && before->time <= e->time),
+                   "event %u out of order", i);
+        }
+        int found = 0; /* the same event in one of the halves */
+        for (uint32_t k = 0; k < first_half + second_half && k < 256; ++k)
+            found += halves[k].character == e->character && halves[k].event == e->event && halves[k].time == e->time;
+        EXPECT(found == 1, "event %u found %d times in the halves", i, found);
+    }
+    uint32_t small = 0;
+    EXPECT(crowdgpu_crowd_events(crowd, everyone, 16, 0.0, 2.0, events, 3, &small) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               small == fired && strstr(crowdgpu_last_error(), "room for 3") != NULL,
+           "3 places for %u events: %s", small, crowdgpu_last_error());
+    const uint32_t missing = 16;
+    EXPECT(crowdgpu_crowd_events(crowd, &missing, 1, 0.0, 2.0, events, 256, &small) == CROWDGPU_ERROR_INVALID_ARGUMENT,
+           "events of a character the crowd lacks");
+    EXPECT(crowdgpu_crowd_events(crowd, everyone, 16, 0.0, 2.0, NULL, 256, &small) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               crowdgpu_crowd_events(NULL, everyone, 16, 0.0, 2.0, events, 256, &small) == CROWDGPU_ERROR_INVALID_ARGUMENT,
+           "events with NULLs");
 
     crowdgpu_renderer_settings settings;
     crowdgpu_renderer_settings_default(&settings);

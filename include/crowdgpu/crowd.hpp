@@ -119,8 +119,9 @@ public:
     // is the joint's position; the rest its rotation times the character's scale.
     // Exact with what the renderer draws: the same motion, sampling, blending and hierarchy as the
     // CPU palettes (which the GPU path matches). Times: after advanceTo(t), any time from the start
-    // of the segment before each character's current one (one replan back) on; a later time than t
-    // follows the current plan (which a later advanceTo may replace). Throws Error(InvalidArgument)
+    // of the segment before each character's current one (one replan back; further back for one that
+    // replanned more than once since the advanceTo before, so every frame's window is known) on; a
+    // later time than t follows the current plan (which a later advanceTo may replace). Throws Error(InvalidArgument)
     // for a character or joint that does not exist, or a time before what the crowd still knows.
     // Cost: one character's whole skeleton (about 50 ns a joint), allocation-free once warm. Not to
     // be called while another thread advances the crowd or computes palettes.

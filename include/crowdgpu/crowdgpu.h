@@ -62,6 +62,15 @@ int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name);
  * CROWDGPU_ERROR_INVALID_ARGUMENT naming the model and the joint when the model has no such joint. */
 crowdgpu_result crowdgpu_model_with_prop(crowdgpu_model model, const char* prop, const char* joint,
                                          const float offset[12], float share, crowdgpu_model* out);
+/* A clip's animation events, in time order (crowdgpu::Model::eventCount, eventName, eventTime,
+ * eventJoint): a "footstep" per foot touchdown on the built-in models' walking clips, a glTF
+ * animation's from its extras (docs/events.md). A model, clip or event that does not exist is
+ * CROWDGPU_ERROR_INVALID_ARGUMENT, with nothing written. The name lives as long as the model. */
+crowdgpu_result crowdgpu_model_event_count(crowdgpu_model model, uint32_t clip, uint32_t* count);
+crowdgpu_result crowdgpu_model_event_name(crowdgpu_model model, uint32_t clip, uint32_t event, const char** name);
+crowdgpu_result crowdgpu_model_event_time(crowdgpu_model model, uint32_t clip, uint32_t event, float* seconds);
+/* The joint where the event happens (a footstep's foot), or -1 for none. */
+crowdgpu_result crowdgpu_model_event_joint(crowdgpu_model model, uint32_t clip, uint32_t event, int32_t* joint);
 void crowdgpu_model_destroy(crowdgpu_model model);
 
 /* ---- Crowds (Vulkan-free) ---- */
@@ -92,6 +101,20 @@ uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
  * times from one replan back on). About 50 ns a joint of the character's model. */
 crowdgpu_result crowdgpu_crowd_joint_world(crowdgpu_crowd crowd, uint32_t character, uint32_t joint, double time,
                                            float out[12]);
+/* An event a character fired: event `event` of its model's clip `clip` at scene time `time`. */
+typedef struct crowdgpu_event {
+    uint32_t character, clip, event;
+    double time;
+} crowdgpu_event;
+/* The events that `character_count` characters fire at times from < t <= to (crowdgpu::Crowd::events:
+ * by character in the order given, each in time order; exact, the same split over any frames). Sets
+ * *count to how many fired and writes them to out[0 .. *count) when they fit in `capacity`; when
+ * they do not, writes none and returns CROWDGPU_ERROR_INVALID_ARGUMENT (call again with room for
+ * *count; capacity 0 and out NULL asks for the count alone). A character that does not exist or a
+ * window before what the crowd still knows is CROWDGPU_ERROR_INVALID_ARGUMENT. About 100 ns a
+ * character for a frame's window. */
+crowdgpu_result crowdgpu_crowd_events(crowdgpu_crowd crowd, const uint32_t* characters, uint32_t character_count,
+                                      double from, double to, crowdgpu_event* out, uint32_t capacity, uint32_t* count);
 void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest);
 void crowdgpu_crowd_destroy(crowdgpu_crowd crowd);
 

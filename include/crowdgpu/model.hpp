@@ -49,7 +49,8 @@ class Model {
 public:
     // The built-in soldier (about 1.8 m; clips walk, run, idle) and horse; `seed` varies their
     // proportions. The soldier carries a rifle and, one in eight, a flag (props, docs/props.md);
-    // `props` false: neither (their cost, measured). Costs a few milliseconds (mesh, clips, LODs, sphere).
+    // `props` false: neither (their cost, measured). Costs a few tens of milliseconds (mesh, clips and
+    // their footsteps, LODs, pose sphere).
     static Model soldier(std::uint32_t seed = 1, bool props = true);
     static Model horse(std::uint32_t seed = 1);
     // A rider on a mount as one character (docs/cavalry.md): the mount's skeleton and mesh plus the
@@ -97,13 +98,17 @@ public:
     // The clip a character plays when none is named: "walk" when the model has one, else the first.
     std::uint32_t defaultClip() const;
     // A clip's animation events (what Crowd::events reports): named moments of its cycle, in time
-    // order. A glTF animation's come from its extras: "extras": {"events": [{"name": "shot",
-    // "time": 0.4}, ...]}, times in seconds within [0, the clip's duration] (docs/events.md). The
-    // built-in models' clips have none yet (footsteps are not done). Throw Error(InvalidArgument) for
-    // a clip or event that does not exist. Cost: an index.
+    // order. The built-in models' walking clips carry a "footstep" for each foot's touchdown, its
+    // joint that foot (the soldier's "foot_l", "foot_r"; the horse's "front_pastern_l", ...). A glTF
+    // animation's come from its extras: "extras": {"events": [{"name": "shot", "time": 0.4,
+    // "joint": "hand_r"}, ...]}, times in seconds within [0, the clip's duration], the joint optional
+    // (docs/events.md). Throw Error(InvalidArgument) for a clip or event that does not exist. Cost:
+    // an index.
     std::uint32_t eventCount(std::uint32_t clip) const;
     const std::string& eventName(std::uint32_t clip, std::uint32_t event) const;
     float eventTime(std::uint32_t clip, std::uint32_t event) const;  // seconds into the cycle
+    // The joint where the event happens (a footstep's foot), or -1 when it names none.
+    std::int32_t eventJoint(std::uint32_t clip, std::uint32_t event) const;
     // The joint of this name (glTF: its node's name; the soldier's "hand_r", "foot_l", ...), or -1.
     // Cost: a scan of the joint names.
     std::int32_t findJoint(const std::string& name) const;

@@ -2,9 +2,11 @@
 // per-thread message.
 #include "crowdgpu/crowdgpu.h"
 
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "crowdgpu/crowd.hpp"
 #include "crowdgpu/renderer.hpp"
@@ -114,6 +116,26 @@ int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name) {
 }
 
 uint32_t crowdgpu_model_clip_count(crowdgpu_model model) { return model ? model->model.clipCount() : 0; }
+
+crowdgpu_result crowdgpu_model_event_count(crowdgpu_model model, uint32_t clip, uint32_t* count) {
+    if (!model || !count) return invalid("crowdgpu_model_event_count: model or count is NULL");
+    return guarded([&] { *count = model->model.eventCount(clip); });
+}
+
+crowdgpu_result crowdgpu_model_event_name(crowdgpu_model model, uint32_t clip, uint32_t event, const char** name) {
+    if (!model || !name) return invalid("crowdgpu_model_event_name: model or name is NULL");
+    return guarded([&] { *name = model->model.eventName(clip, event).c_str(); });
+}
+
+crowdgpu_result crowdgpu_model_event_time(crowdgpu_model model, uint32_t clip, uint32_t event, float* seconds) {
+    if (!model || !seconds) return invalid("crowdgpu_model_event_time: model or seconds is NULL");
+    return guarded([&] { *seconds = model->model.eventTime(clip, event); });
+}
+
+crowdgpu_result crowdgpu_model_event_joint(crowdgpu_model model, uint32_t clip, uint32_t event, int32_t* joint) {
+    if (!model || !joint) return invalid("crowdgpu_model_event_joint: model or joint is NULL");
+    return guarded([&] { *joint = model->model.eventJoint(clip, event); });
+}
 void crowdgpu_model_destroy(crowdgpu_model model) { delete model; }
 
 crowdgpu_result crowdgpu_model_with_prop(crowdgpu_model model, const char* prop, const char* joint,
@@ -178,6 +200,26 @@ crowdgpu_result crowdgpu_crowd_joint_world(crowdgpu_crowd crowd, uint32_t charac
                                            float out[12]) {
     if (!crowd || !out) return invalid("crowdgpu_crowd_joint_world: crowd or out is NULL");
     return guarded([&] { crowd->crowd.jointWorld(character, joint, time, out); });
+}
+
+crowdgpu_result crowdgpu_crowd_events(crowdgpu_crowd crowd, const uint32_t* characters, uint32_t character_count,
+                                      double from, double to, crowdgpu_event* out, uint32_t capacity, uint32_t* count) {
+    if (!crowd || !count || (character_count > 0 && !characters) || (capacity > 0 && !out))
+        return invalid("crowdgpu_crowd_events: crowd, characters, out or count is NULL");
+    // Reused per thread, so a host asking every frame allocates nothing once warm.
+    thread_local std::vector<crowdgpu::Event> fired;
+    return guarded([&] {
+        crowd->crowd.events(characters, character_count, from, to, fired);
+        if (fired.size() > UINT32_MAX)
+            throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument, "crowdgpu_crowd_events: more than 2^32 events");
+        *count = static_cast<uint32_t>(fired.size());
+        if (fired.size() > capacity)
+            throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument,
+                                  "crowdgpu_crowd_events: " + std::to_string(fired.size()) + " events fired, room for " +
+                                      std::to_string(capacity));
+        for (std::size_t i = 0; i < fired.size(); ++i)
+            out[i] = {fired[i].character, fired[i].clip, fired[i].event, fired[i].time};
+    });
 }
 
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd) { return crowd ? crowd->crowd.size() : 0; }

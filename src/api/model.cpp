@@ -115,6 +115,11 @@ float Model::eventTime(std::uint32_t clip, std::uint32_t event) const {
     return data_->model.clips[clip].events[event].time;
 }
 
+std::int32_t Model::eventJoint(std::uint32_t clip, std::uint32_t event) const {
+    eventName(clip, event);  // checks the indices
+    return data_->model.clips[clip].events[event].joint;
+}
+
 std::int32_t Model::findJoint(const std::string& jointName) const {
     const std::vector<std::string>& names = data_->model.skeleton.jointNames;
     for (std::size_t j = 0; j < names.size(); ++j)

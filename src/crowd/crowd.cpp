@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <random>
 #include <string>
@@ -172,8 +173,15 @@ PlanContext Crowd::planContext(std::uint32_t character) const {
     return {library_, model, gaits_[model], behaviour_, rhythms_[model], character};
 }
 
-std::uint32_t Crowd::replan(std::uint32_t character, double time) {
+std::uint32_t Crowd::replan(std::uint32_t character, double time, EarlierSegments& earlier) {
     Agent& agent = agents_[character];
+    // previous_ is about to be replaced; it held up to `end`. Kept when it is known and the window
+    // since the last advance reaches into it.
+    auto keepPrevious = [&](double end) {
+        const Segment& old = previous_[character];
+        if (!std::isinf(knownFrom_[character]) && knownFrom_[character] <= old.start && end > advancedFrom_)
+            earlier.emplace_back(character, old);
+    };
     const PlanContext context = planContext(character);
     const std::uint32_t model = characters_[character].model;
     std::uint32_t planned = 0;
@@ -193,6 +201,7 @@ std::uint32_t Crowd::replan(std::uint32_t character, double time) {
         // stretch is not known exactly.
         const double start = plans_[character].start;
         if (beforeDue >= start && beforeEnd >= start && before.start < start) {
+            keepPrevious(before.start);
             previous_[character] = before;
             knownFrom_[character] = before.start;
         } else {
@@ -201,6 +210,7 @@ std::uint32_t Crowd::replan(std::uint32_t character, double time) {
     }
     while (agent.due <= time) {
         Segment next = planNext(agent, plans_[character], context);
+        keepPrevious(plans_[character].start);
         previous_[character] = std::move(plans_[character]);
         plans_[character] = std::move(next);
         changed();
@@ -235,6 +245,7 @@ void Crowd::advanceTo(double time) {
         plans_.clear();
         previous_.clear();
         knownFrom_.clear();
+        earlier_.clear();
         segments_.clear();
         agents_.clear();
         cursors_.clear();
@@ -243,6 +254,12 @@ void Crowd::advanceTo(double time) {
         added_.clear();
         calendar_.clear();
         for (const Character& c : characters) addCharacter(c);
+    }
+    if (time > plannedTo_) {
+        // The new window starts where the last ended: what only the last one needed is dropped.
+        for (const auto& entry : earlier_) knownFrom_[entry.first] = previous_[entry.first].start;
+        earlier_.clear();
+        advancedFrom_ = plannedTo_;
     }
     plannedTo_ = time;
     const bool newEpoch = epochOf(time) != epoch_;
@@ -257,13 +274,22 @@ void Crowd::advanceTo(double time) {
     // choices hash their own index), so any split of the work gives the same crowd.
     calendar_.takeDue(time, [this](std::uint32_t c) { return wakeOf(c); }, due_);
     std::atomic<std::uint64_t> planned{0};
+    std::mutex earlierLock;
+    EarlierSegments earlier;
     WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(due_.size()), 64,
                                      [&](std::uint32_t begin, std::uint32_t end) {
                                          std::uint64_t count = 0;
-                                         for (std::uint32_t i = begin; i < end; ++i) count += replan(due_[i], time);
+                                         EarlierSegments mine;
+                                         for (std::uint32_t i = begin; i < end; ++i) count += replan(due_[i], time, mine);
                                          planned.fetch_add(count, std::memory_order_relaxed);
+                                         if (mine.empty()) return;
+                                         const std::lock_guard<std::mutex> hold(earlierLock);
+                                         earlier.insert(earlier.end(), mine.begin(), mine.end());
                                      });
     planned_ += planned.load();
+    // A character's segments are all in one chunk, in order: appended as they come, they stay in order.
+    for (auto& [c, segment] : earlier) earlier_[c].push_back(std::move(segment));
+    for (const auto& [c, list] : earlier_) knownFrom_[c] = list.front().start;
     lastChanged_.clear();
     if (newEpoch) {
         epoch_ = epochOf(time);
@@ -342,8 +368,26 @@ MotionState Crowd::stateKnown(std::uint32_t index, double time) const {
                          " s, the earliest its plans still hold (query each frame's window as you advance)");
     const std::uint32_t model = characters_[index].model;
     if (time >= plans_[index].start || std::isinf(knownFrom_[index])) return stateAt(index, time);
-    return evaluateMotion(recordFrom(previous_[index], epoch_, library_, model), static_cast<float>(time - epoch_),
-                          library_, model);
+    const Segment* segment = &previous_[index];
+    if (const auto found = earlier_.find(index); found != earlier_.end() && time < previous_[index].start)
+        for (const Segment& s : found->second)
+            if (s.start <= time) segment = &s;
+    return evaluateMotion(recordFrom(*segment, epoch_, library_, model), static_cast<float>(time - epoch_), library_,
+                          model);
+}
+
+template <class F>
+void Crowd::forEachKnownSegment(std::uint32_t index, F&& f) const {
+    const Segment& current = plans_[index];
+    double previousFrom = knownFrom_[index];
+    if (const auto found = earlier_.find(index); found != earlier_.end()) {
+        const std::vector<Segment>& list = found->second;
+        for (std::size_t i = 0; i < list.size(); ++i)
+            f(list[i], list[i].start, i + 1 < list.size() ? list[i + 1].start : previous_[index].start);
+        previousFrom = previous_[index].start;
+    }
+    if (!std::isinf(knownFrom_[index]) && previousFrom < current.start) f(previous_[index], previousFrom, current.start);
+    f(current, current.start, std::numeric_limits<double>::infinity());
 }
 
 anim::Affine Crowd::jointWorld(std::uint32_t index, std::uint32_t joint, double time) const {
@@ -369,12 +413,9 @@ void Crowd::events(std::span<const std::uint32_t> characters, double from, doubl
                              " s asked, but its plans hold from " + std::to_string(knownFrom_[c]) +
                              " s on (ask for each frame's window as you advance)");
         const std::uint32_t model = characters_[c].model;
-        const Segment& current = plans_[c];
-        const bool previous = !std::isinf(knownFrom_[c]) && knownFrom_[c] < current.start;
-        if (previous)
-            segmentEvents(previous_[c], *models_[model], library_, model, c, knownFrom_[c], current.start, from, to, out);
-        segmentEvents(current, *models_[model], library_, model, c, current.start,
-                      std::numeric_limits<double>::infinity(), from, to, out);
+        forEachKnownSegment(c, [&](const Segment& segment, double begin, double end) {
+            segmentEvents(segment, *models_[model], library_, model, c, begin, end, from, to, out);
+        });
     }
 }
 

@@ -10,6 +10,8 @@
 // records with the same float arithmetic.
 #include <cstdint>
 #include <span>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -143,7 +145,8 @@ public:
     // start a character stands at that start, as drawn. Throws gpu::Error for a time before knownFrom().
     MotionState stateKnown(std::uint32_t index, double time) const;
     // The earliest time stateKnown answers for `index`: -infinity while its first plan holds, else the
-    // start of the segment before its current one (one replan back), or the current one's start when
+    // start of the segment before its current one (one replan back; the earliest in earlier_ when it
+    // replanned more than once in the last advanceTo), or the current one's start when
     // advanceTo skipped whole episodes to reach it.
     double knownFrom(std::uint32_t index) const { return knownFrom_[index]; }
     // The segment `index` followed before its current one (valid when knownFrom() is finite and before
@@ -178,7 +181,14 @@ public:
 private:
     void addCharacter(const Character& character);
     // Plans character `character` up to `time`; returns the segments it planned.
-    std::uint32_t replan(std::uint32_t character, double time);
+    // Segments that left previous_ while the window since the last advance still needs them go to
+    // `earlier`, in order.
+    using EarlierSegments = std::vector<std::pair<std::uint32_t, Segment>>;
+    std::uint32_t replan(std::uint32_t character, double time, EarlierSegments& earlier);
+    // Calls f(segment, begin, end) for each segment `index` followed from knownFrom() on, in time
+    // order: the earlier ones, the previous one, the current one (end: infinity).
+    template <class F>
+    void forEachKnownSegment(std::uint32_t index, F&& f) const;
     // When `character` next needs planning: its plan's end, or its episode's.
     double wakeOf(std::uint32_t character) const;
     // Restates the records of lastChanged_ relative to epoch_.
@@ -203,6 +213,12 @@ private:
     // knows each character's motion exactly (Crowd::knownFrom).
     std::vector<Segment> previous_;
     std::vector<double> knownFrom_;
+    // Further back, for the few characters that replanned more than once in the last advanceTo (a
+    // milling character entering an episode whose first segment lasts milliseconds): the segments
+    // before previous_ that the window (advancedFrom_, plannedTo_] still needs, in time order. Emptied
+    // by the next advanceTo to a later time.
+    std::unordered_map<std::uint32_t, std::vector<Segment>> earlier_;
+    double advancedFrom_ = 0.0;
     std::vector<gpu::MotionRecord> segments_;  // plans_ relative to epoch_
     std::vector<Agent> agents_;
     double plannedTo_ = 0.0;

@@ -6,7 +6,8 @@
 //
 // Crossfades: both clips sit at the same point of their cycles, so both clips' events could fire; an
 // event fires from the clip of the larger blend weight at its moment only (the clip faded to from half
-// way on), so a walk -> run gives one footstep per foot, not two.
+// way on), so a walk -> run never steps a foot twice at once. It can skip one where the two clips'
+// points of that foot straddle the half-way moment (docs/events.md#firing).
 #include <cstdint>
 #include <vector>
 

@@ -110,10 +110,12 @@ void checkPoseReach(const anim::Skeleton& skeleton, const anim::Clip& clip, std:
          " of joint '" + skeleton.jointNames[channel.joint] + "'): its keys " + beyond);
 }
 
-// The clip's events from the animation's extras (documented in crowdgpu/model.hpp):
-//   "extras": {"events": [{"name": "footstep.left", "time": 0.25}, ...]}
-// Anything else in extras is the file's own business; a malformed "events" fails naming the field.
-std::vector<anim::ClipEvent> readEvents(const tinygltf::Animation& animation, std::size_t a, float duration) {
+// The clip's events from the animation's extras (documented in docs/events.md):
+//   "extras": {"events": [{"name": "footstep.left", "time": 0.25, "joint": "foot_l"}, ...]}
+// "joint" (optional) is the name of a node of the skin's skeleton, the first of that name. Anything
+// else in extras is the file's own business; a malformed "events" fails naming the field.
+std::vector<anim::ClipEvent> readEvents(const tinygltf::Animation& animation, std::size_t a, float duration,
+                                       const std::vector<std::string>& jointNames) {
     std::vector<anim::ClipEvent> events;
     if (!animation.extras.IsObject() || !animation.extras.Has("events")) return events;
     const std::string field = "animations[" + std::to_string(a) + "].extras.events";
@@ -129,7 +131,16 @@ std::vector<anim::ClipEvent> readEvents(const tinygltf::Animation& animation, st
         const double time = event.Get("time").GetNumberAsDouble();
         if (!(time >= 0.0 && time <= static_cast<double>(duration)))
             fail(at + ".time: " + std::to_string(time) + " s is outside the clip (0 to " + std::to_string(duration) + " s)");
-        events.push_back({event.Get("name").Get<std::string>(), static_cast<float>(time)});
+        std::int32_t joint = -1;
+        if (event.Has("joint")) {
+            const tinygltf::Value& name = event.Get("joint");
+            if (!name.IsString()) fail(at + ".joint: expected the name of a joint (a string)");
+            const auto found = std::find(jointNames.begin(), jointNames.end(), name.Get<std::string>());
+            if (found == jointNames.end())
+                fail(at + ".joint: no joint named '" + name.Get<std::string>() + "' in the skeleton");
+            joint = static_cast<std::int32_t>(found - jointNames.begin());
+        }
+        events.push_back({event.Get("name").Get<std::string>(), static_cast<float>(time), joint});
     }
     std::stable_sort(events.begin(), events.end(),
                      [](const anim::ClipEvent& x, const anim::ClipEvent& y) { return x.time < y.time; });
@@ -188,7 +199,7 @@ std::vector<anim::Clip> loadClips(const tinygltf::Model& model, const SkeletonBu
             sourceChannels.push_back(c);
         }
         checkPoseReach(skeleton.skeleton, clip, a, sourceChannels, maxBindDistance);
-        clip.events = readEvents(animation, a, clip.duration);
+        clip.events = readEvents(animation, a, clip.duration, skeleton.skeleton.jointNames);
         clips.push_back(std::move(clip));
     }
     if (ignored > 0)

@@ -1,5 +1,6 @@
 // The built-in horse: a bay (brown coat, black mane, tail and lower legs) about 1.6 m at the withers.
 #include "model/horse_clips.h"
+#include "model/footsteps.h"
 #include "model/mesh_builder.h"
 #include "model/procedural_models.h"
 #include "model/seeded_variation.h"
@@ -237,6 +238,8 @@ SkinnedModel makeHorse(std::uint32_t seed) {
     horse.skeleton = bones.build(stretch);
     horse.clips = makeHorseClips(horse);
     computeBounds(horse);
+    // Last, on the finished mesh and clips: footsteps are found where the skinned feet touch down.
+    attachFootsteps(horse, {"front_pastern_l", "front_pastern_r", "hind_pastern_l", "hind_pastern_r"});
     return horse;
 }
 

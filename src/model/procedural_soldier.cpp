@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "model/attach_prop.h"
+#include "model/footsteps.h"
 #include "model/mesh_builder.h"
 #include "model/procedural_models.h"
 #include "model/seeded_variation.h"
@@ -252,6 +253,8 @@ SkinnedModel makeSoldier(std::uint32_t seed, bool props) {
     soldier.clips = makeSoldierClips(soldier);
     if (props) addProps(soldier, stretch);
     computeBounds(soldier);
+    // Last, on the finished mesh and clips: footsteps are found where the skinned feet touch down.
+    attachFootsteps(soldier, {"foot_l", "foot_r"});
     return soldier;
 }
 
