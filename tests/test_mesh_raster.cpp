@@ -139,7 +139,12 @@ TEST_F(GpuTest, MeshRasterDrawsTheHardwarePictureOfAMixedCrowd) {
 TEST_F(GpuTest, MeshVisibilityIdsDecodeToTheCharacterAndTriangle) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     std::vector<crowd::Character> characters(5);
+    // The rifle only: the pose sphere holds the props at least half the crowd carries, not a flag.
+    std::uint32_t rifle = 0;
+    for (std::size_t k = 0; k < soldier.props.size(); ++k)
+        if (soldier.props[k].name == "rifle") rifle |= 1u << k;
     for (int i = 0; i < 5; ++i) {
+        characters[i].props = rifle;
         characters[i].position = glm::vec3(-4.0f + 2.0f * float(i), 0.0f, -3.0f * float(i));
         characters[i].heading = 0.7f * float(i);
         characters[i].timeOffset = 0.2f * float(i);
