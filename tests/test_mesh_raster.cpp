@@ -43,7 +43,8 @@ MeshFrame renderFrame(const gpu::VulkanContext& context, test::TestRenderer& ren
     MeshFrame frame;
     frame.lods = test::internalCounts(renderer.takeStats().back().lods);
     frame.image = renderer.readback();
-    if (const render::MeshRaster* raster = renderer.recorder().meshRaster()) {
+    const render::MeshRaster* raster = renderer.recorder().meshRaster();
+    if (raster && renderer.recorder().meshesInComputeThisFrame(0)) {
         frame.visibility = readAll<std::uint64_t>(context, raster->visibility(0));
         frame.split = readAll<gpu::MeshSplit>(context, raster->split()).at(0);
     }
@@ -353,9 +354,9 @@ TEST_F(GpuTest, MeshRasterFollowsTheTopLeftRule) {
     if (HasFailure()) keepImages("mesh-raster-top-left", h.image, c.image);
 }
 
-// The library refuses a mesh limit that is negative or not a number, in one line.
+// The library refuses a mesh limit that is negative (but -1, automatic) or not a number, in one line.
 TEST_F(GpuTest, MeshRasterLimitIsChecked) {
-    for (const float bad : {-1.0f, std::nanf(""), 2e6f}) {
+    for (const float bad : {-2.0f, -0.5f, std::nanf(""), 2e6f}) {
         crowdgpu::RendererSettings settings;
         settings.meshRasterLimit = bad;
         try {
@@ -365,5 +366,48 @@ TEST_F(GpuTest, MeshRasterLimitIsChecked) {
             EXPECT_EQ(e.code(), crowdgpu::ErrorCode::InvalidArgument);
             EXPECT_NE(std::string(e.what()).find("mesh raster limit"), std::string::npos) << e.what();
         }
+    }
+}
+
+// Auto's automatic limit engages the mesh path on a frame whose slot's previous frame drew at least the
+// threshold's mesh triangles, and not otherwise: the mixed crowd's fly-over, one frame in flight. With the
+// threshold under what the crowd draws, the first frame (no history) stays on the hardware and the next
+// goes to compute with the hardware's picture (99.5 % of pixels within 2/255); with the threshold above
+// it, no frame does, and the pictures are the hardware's exactly.
+TEST_F(GpuTest, AutoEngagesTheMeshPathAfterAFrameOfManyTriangles) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    const model::SkinnedModel horse = test::loadModel("horse", 1);
+    crowd::LayoutOptions layout;
+    layout.count = 600;
+    layout.weights = {3.0f, 1.0f};
+    const model::SkinnedModel* models[2] = {&soldier, &horse};
+    crowd::Crowd crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+    test::RendererOptions options = meshOptions({480, 270}, render::RasterMode::Hardware);
+    test::TestRenderer hardware(*device, crowd, options);
+    options.raster = render::RasterMode::Auto;
+    ASSERT_EQ(options.meshRasterLimitPixels, render::kMeshRasterAutomatic);  // the default
+    options.meshRasterMinTriangles = 10'000;
+    test::TestRenderer engaged(*device, crowd, options);
+    options.meshRasterMinTriangles = 100'000'000;
+    test::TestRenderer idle(*device, crowd, options);
+    for (test::TestRenderer* r : {&hardware, &engaged, &idle})
+        r->camera = app::cameraOnPath(app::CameraPath::FlyOver, test::shapeOf(crowd), 480.0f / 270.0f, 3.0);
+    for (int frame = 0; frame < 3; ++frame) {
+        const double time = 11.0 + frame / 60.0;
+        const MeshFrame h = renderFrame(*context, hardware, time);
+        const MeshFrame e = renderFrame(*context, engaged, time);
+        const MeshFrame i = renderFrame(*context, idle, time);
+        const std::uint64_t triangles = h.lods.triangles[0] + h.lods.triangles[1] + h.lods.triangles[2];
+        ASSERT_GT(triangles, 10'000u);
+        EXPECT_EQ(engaged.recorder().meshesInComputeThisFrame(0), frame > 0) << "frame " << frame;
+        EXPECT_FALSE(idle.recorder().meshesInComputeThisFrame(0)) << "frame " << frame;
+        if (frame > 0) EXPECT_GT(e.split.computeCount, 20u) << "frame " << frame;
+        std::size_t close = 0, same = 0;
+        for (std::size_t p = 0; p < h.image.pixels.size() / 4; ++p) {
+            close += within(h.image, e.image, p, 2) ? 1 : 0;
+            same += within(h.image, i.image, p, 0) ? 1 : 0;
+        }
+        EXPECT_GE(double(close) / double(h.image.pixels.size() / 4), 0.995) << "frame " << frame;
+        EXPECT_EQ(same, h.image.pixels.size() / 4) << "frame " << frame;
     }
 }

@@ -130,9 +130,11 @@ struct RendererSettings {
                                    // to hardware without 64-bit atomics or with multisampling)
     // Under Raster::Auto, the largest character (its pose sphere's diameter on screen, pixels) whose mesh
     // the compute rasterizer draws, for methods that skin into a buffer; larger ones stay on the hardware.
-    // 0: meshes on the hardware under auto. Raster::Compute draws every mesh it can (wholly in front of
-    // the eye) in compute (docs/compute-raster.md, "Meshes").
-    float meshRasterLimit = 0.0f;
+    // -1 (automatic): 64 px, on frames whose frame slot's previous frame drew at least 4,000,000 mesh
+    // triangles (where the hardware rasterizer is the wall); 0: never; a limit: every frame.
+    // Raster::Compute draws every mesh it can (wholly in front of the eye) in compute
+    // (docs/compute-raster.md, "Meshes").
+    float meshRasterLimit = -1.0f;
     bool shadows = true;
     // Casters drawn into the shadow map at a level from their size in the map (texels of pose-sphere
     // diameter, the LOD thresholds' values), never finer than in view, and those under 2 texels not at

@@ -72,7 +72,7 @@ render::CullSettings cullSettings(const RendererSettings& s) {
     return cull;
 }
 
-static_assert(RendererSettings{}.meshRasterLimit == render::kAutoMeshRasterLimitPixels,
+static_assert(RendererSettings{}.meshRasterLimit == render::kMeshRasterAutomatic,
               "the public default is the recorder's");
 
 frame::RecorderOptions rendererOptions(const RendererSettings& s) {
@@ -84,8 +84,8 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
         throw Error(ErrorCode::InvalidArgument, "LOD hysteresis must lie in [0, 1)");
     if (s.shadowMapSize == 0 || s.shadowMapSize > 16384)
         throw Error(ErrorCode::InvalidArgument, "shadow map size must be 1 to 16384 texels");
-    if (!(s.meshRasterLimit >= 0.0f && s.meshRasterLimit <= 1e6f))
-        throw Error(ErrorCode::InvalidArgument, "the mesh raster limit must lie in [0, 1e6] pixels");
+    if (!(s.meshRasterLimit == render::kMeshRasterAutomatic || (s.meshRasterLimit >= 0.0f && s.meshRasterLimit <= 1e6f)))
+        throw Error(ErrorCode::InvalidArgument, "the mesh raster limit must lie in [0, 1e6] pixels, or be -1 (automatic)");
     if (s.events && !(s.eventCapacity >= 1 && s.eventCapacity <= 4000000))
         throw Error(ErrorCode::InvalidArgument, "the event capacity must be 1 to 4,000,000 records");
     frame::RecorderOptions o;

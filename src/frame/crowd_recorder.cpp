@@ -82,9 +82,14 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
     setShadowRaster(options.shadowRaster);
     // Meshes in compute: every one it can take under compute, the small ones under auto (none while
     // auto's limit is 0).
+    const bool automatic = options.meshRasterLimitPixels < 0.0f;
     const float meshLimit = raster_ == render::RasterMode::Compute ? std::numeric_limits<float>::infinity()
-                            : raster_ == render::RasterMode::Auto  ? options.meshRasterLimitPixels
-                                                                   : 0.0f;
+                            : raster_ == render::RasterMode::Auto
+                                ? (automatic ? render::kAutoMeshRasterLimitPixels : options.meshRasterLimitPixels)
+                                : 0.0f;
+    meshRasterGated_ = raster_ == render::RasterMode::Auto && automatic;
+    meshRasterMinTriangles_ = options.meshRasterMinTriangles;
+    meshPathOn_.assign(options.framesInFlight, false);
     if (meshLimit > 0.0f)
         meshRaster_ = std::make_unique<render::MeshRaster>(context_, pool_, buffers_, lists_, scene_.setLayout(),
                                                            target_, options.framesInFlight, meshLimit);
@@ -184,7 +189,11 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         const render::Camera camera = render::cameraOf(view);
         impostorRaster_->record(cmd, slot, view.projection * view.view, camera.eye, view.viewport.extent, impostorBlend_);
     }
-    if (rastersMeshesInCompute()) {
+    // Auto's automatic limit: the mesh path when the hardware rasterizer was this slot's wall last time
+    // (its frame's counts, read back: the host waited for the slot).
+    meshPathOn_[slot] = rastersMeshesInCompute() &&
+                        (!meshRasterGated_ || lists_.countsOf(slot).totalTriangles() >= meshRasterMinTriangles_);
+    if (meshPathOn_[slot]) {
         // After skinning, before the colour draw: the small meshes leave the colour list for compute.
         const render::Camera camera = render::cameraOf(view);
         const float pixelsPerUnit =
@@ -192,7 +201,7 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         meshRaster_->record(cmd, slot, method_->skinnedVertices(), view.projection * view.view, camera.eye,
                             pixelsPerUnit, view.viewport.extent);
     }
-    if (impostorRaster_ || rastersMeshesInCompute()) gpu::passDone(passes_, cmd, "raster");
+    if (impostorRaster_ || meshPathOn_[slot]) gpu::passDone(passes_, cmd, "raster");
     if (impostorDraw_) impostorDraw_->recordDraws(cmd);
     if (!shadows_ && !shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
     shadowMapReady_ = shadowMapReady_ || !shadows_;
@@ -286,7 +295,7 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     if (impostorDraw_) impostorDraw_->record(cmd, scene_.set(slot), push, impostorBlend_);
     // The compute-rasterized impostors, merged with all of the above by their depth.
     if (impostorRaster_) impostorRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport, impostorBlend_);
-    if (rastersMeshesInCompute()) meshRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
+    if (meshPathOn_[slot]) meshRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
     stages_[slot] = Stage::Idle;
 }
 

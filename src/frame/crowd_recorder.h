@@ -74,8 +74,10 @@ struct RecorderOptions {
     // Under auto, the largest impostor (screen rectangle's longer side, pixels) drawn in compute.
     float rasterLimitPixels = render::kAutoRasterLimitPixels;
     // Under auto, the largest character (pose sphere's diameter on screen, pixels) whose mesh is drawn in
-    // compute (render/mesh_raster.h); 0: none.
-    float meshRasterLimitPixels = render::kAutoMeshRasterLimitPixels;
+    // compute (render/mesh_raster.h), every frame; 0: none; render::kMeshRasterAutomatic: the automatic
+    // limit on frames whose slot's previous frame drew at least meshRasterMinTriangles mesh triangles.
+    float meshRasterLimitPixels = render::kMeshRasterAutomatic;
+    std::uint64_t meshRasterMinTriangles = render::kAutoMeshRasterMinTriangles;
     // Animation events of the characters in view, into a buffer for the host (render/event_pass.h);
     // the buffer keeps eventCapacity records a frame.
     bool events = true;
@@ -170,6 +172,9 @@ public:
     // Whether this frame's small meshes go through the compute rasterizer (raster compute or auto, a
     // method that skins into a buffer the pass can read).
     bool rastersMeshesInCompute() const;
+    // Whether slot `slot`'s frame, recorded last, drew its small meshes in compute (the split's list is
+    // this frame's then).
+    bool meshesInComputeThisFrame(std::uint32_t slot) const { return meshPathOn_[slot]; }
     skin::SkinningMethod& method() { return *method_; }
     const skin::SkinningMethod& method() const { return *method_; }
     const render::GeometryPool& pool() const { return pool_; }
@@ -235,6 +240,9 @@ private:
     std::unique_ptr<render::ImpostorRaster> impostorRaster_;  // before impostorDraw_: it reads the split
     std::unique_ptr<render::ImpostorDraw> impostorDraw_;
     std::unique_ptr<render::MeshRaster> meshRaster_;  // with raster compute or auto
+    bool meshRasterGated_ = false;          // auto's automatic limit: on by the previous frame's triangles
+    std::uint64_t meshRasterMinTriangles_ = 0;
+    std::vector<bool> meshPathOn_;          // per slot: this frame's decision
     render::RasterMode raster_;  // in effect (auto without what it needs: hardware)
     float rasterLimitPixels_;
     render::CullSettings cull_;

@@ -92,7 +92,7 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
     const bool skinsIntoBuffer = options.method != skin::Method::VertexShader &&
                                  options.method != skin::Method::VertexShaderInstanced;
     const bool meshRaster = options.raster == render::RasterMode::Compute ||
-                            (options.raster == render::RasterMode::Auto && options.meshRasterLimitPixels > 0.0f);
+                            (options.raster == render::RasterMode::Auto && options.meshRasterLimitPixels != 0.0f);
     if (meshRaster && skinsIntoBuffer) {
         std::uint32_t largest = 1;
         for (const model::SkinnedModel* model : crowd.models())

@@ -2,6 +2,7 @@
 // Which rasterizer draws the impostors (docs/compute-raster.md): the hardware's (the frame as before
 // the compute rasterizer), the compute rasterizer's visibility buffer, or each impostor by its size on
 // screen (auto: small ones in compute, large ones on the hardware, decided per impostor on the GPU).
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -20,13 +21,18 @@ std::optional<RasterMode> parseRasterMode(std::string_view name);
 // keeps to the measured range with a margin (0.6x of the hardware's time at 96 px).
 inline constexpr float kAutoRasterLimitPixels = 128.0f;
 
-// Under auto, the largest character (its pose sphere's diameter on screen, pixels) whose mesh the
-// compute rasterizer draws (render/mesh_raster.h); larger ones, and every one under raster hardware,
-// go to the hardware path. 0: under auto, meshes stay on the hardware unless the host asks
-// (RendererSettings::meshRasterLimit, --mesh-raster-limit). Measured on the H100 (docs/compute-raster.md,
-// "Meshes"; bench/results/h100-2026-11-24-mesh-raster): 64 px takes 250,000 all-mesh soldiers inside the
-// crowd from 34 to 144 fps, but costs light frames (paper-fig4, the default scene) 8-14 %, where the
-// hardware draw does not shrink and the raster pass and full-screen resolve add 0.3-0.5 ms.
-inline constexpr float kAutoMeshRasterLimitPixels = 0.0f;
+// Small characters' meshes under auto (render/mesh_raster.h, docs/compute-raster.md "Meshes"). The mesh
+// path has fixed costs (a raster pass and a full-screen resolve: 0.3-0.5 ms at 1080p on the H100) and
+// pays off only when the hardware rasterizer is the wall, so auto engages it for a frame when that frame
+// slot's previous frame drew at least kAutoMeshRasterMinTriangles mesh triangles (about 4 ms on the H100's
+// graphics slice, 1 G triangles/s), for characters up to kAutoMeshRasterLimitPixels across (pose sphere).
+// Measured (bench/results/h100-2026-11-24-mesh-raster): at 64 px, 250,000 all-mesh soldiers inside the
+// crowd (24.7 M triangles) went from 34 to 144 fps and stress 100,000 inside (10.7 M) from 66 to 163,
+// while paper-fig4 (1.0 M) and the default scene (0.56 M) lost 11-14 % with the path always on.
+inline constexpr float kAutoMeshRasterLimitPixels = 64.0f;
+inline constexpr std::uint64_t kAutoMeshRasterMinTriangles = 4'000'000;
+// A mesh limit that asks for that automatic choice (RendererSettings::meshRasterLimit's default); a limit
+// of 0 or more is used every frame (0: no mesh in compute under auto).
+inline constexpr float kMeshRasterAutomatic = -1.0f;
 
 }  // namespace render

@@ -58,9 +58,11 @@ usage: crowd-render [options]
                           which rasterizer draws the impostors: the hardware's, a compute pass into a
                           visibility buffer, or by size on screen (compute up to 128 px); compute needs
                           64-bit atomics and --aa off, auto falls back to hardware (default auto)
-  --mesh-raster-limit PX  under --raster auto, characters up to PX pixels across (pose sphere) have their
-                          meshes rasterized in compute (methods that skin into a buffer); 0: none
-                          (default 0); --raster compute takes every mesh wholly in front of the eye
+  --mesh-raster-limit auto|PX
+                          under --raster auto, characters up to PX pixels across (pose sphere) have their
+                          meshes rasterized in compute every frame (methods that skin into a buffer); 0:
+                          none; auto: 64 px on frames after one that drew 4,000,000 mesh triangles
+                          (default auto); --raster compute takes every mesh wholly in front of the eye
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)
@@ -234,7 +236,11 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--events") options.cull.events = parseOnOff(flag, next());
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
         else if (flag == "--raster") options.cull.raster = parseRaster(flag, next());
-        else if (flag == "--mesh-raster-limit") options.cull.meshRasterLimit = parseNumber(flag, next(), 0.0f, 1e6f);
+        else if (flag == "--mesh-raster-limit") {
+            const std::string value = next();
+            options.cull.meshRasterLimit = value == "auto" ? crowdgpu::RendererSettings{}.meshRasterLimit
+                                                           : parseNumber(flag, value, 0.0f, 1e6f);
+        }
         else if (flag == "--impostors") options.cull.impostors = parseOnOff(flag, next());
         else if (flag == "--impostor-threshold") {
             options.cull.impostorThreshold = parseNumber(flag, next(), 0.0f, 1e6f);
