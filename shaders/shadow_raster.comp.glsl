@@ -13,6 +13,7 @@
 // triangle's plane, clipped to [0, 1], biased as the hardware pass's pipeline is (1.0 x the minimum
 // resolvable difference of the triangle's largest depth + 1.5 x its depth slope per texel), clamped.
 #include "gpu_types.h"
+#include "triangle_coverage.glsl.inc"
 
 layout(local_size_x = 64) in;
 
@@ -29,21 +30,15 @@ layout(push_constant) uniform Push {
     uint firstDraw;    // where the shadow pass's commands start in `draws` (DrawLists::drawCapacity)
 } push;
 
-const float kSubTexel = 256.0;       // the snapping grid
 const float kBiasConstant = 1.0;     // as the hardware pass's pipeline (render/character_draw.cpp)
 const float kBiasSlope = 1.5;
-const int kExactExtent = 100;        // texels: up to it the edge tests are exact in 32-bit integers
 
 // Where a skinned vertex falls in the map: x, y in texels (snapped), z the depth.
 vec3 toMap(uint vertex) {
     const vec4 clip = push.lightViewProjection * vec4(positions[vertex].xyz, 1.0);  // orthographic: w = 1
     const vec2 texel = (clip.xy * 0.5 + 0.5) * float(push.size);
-    return vec3(round(texel * kSubTexel) / kSubTexel, clip.z);
+    return vec3(round(texel * kSubPixel) / kSubPixel, clip.z);
 }
-
-// Top-left rule for an edge a -> b of a triangle whose inside is where the edge function is positive
-// (framebuffer coordinates, y down): a top edge runs exactly along x to +x, a left edge runs up.
-bool topLeft(vec2 a, vec2 b) { return (a.y == b.y && b.x > a.x) || b.y < a.y; }
 
 // The minimum resolvable difference of a D32_SFLOAT depth near z: one unit in the last place of the
 // triangle's largest depth (Vulkan's r for floating-point depth).
@@ -66,42 +61,14 @@ void rasterize(vec3 p0, vec3 p1, vec3 p2) {
         p1 = p2, p2 = t;
         area = -area;
     }
-    const vec2 lo = min(min(p0.xy, p1.xy), p2.xy), hi = max(max(p0.xy, p1.xy), p2.xy);
-    // Texel centres k + 0.5 inside [lo, hi], within the map.
-    const ivec2 first = max(ivec2(ceil(lo - 0.5)), ivec2(0));
-    const ivec2 last = min(ivec2(floor(hi - 0.5)), ivec2(int(push.size) - 1));
-    if (any(greaterThan(first, last))) return;
-    // Depth's plane: z = z0 + dzdx (x - x0) + dzdy (y - y0).
-    const vec2 e1 = p1.xy - p0.xy, e2 = p2.xy - p0.xy;
-    const float dzdx = ((p1.z - p0.z) * e2.y - (p2.z - p0.z) * e1.y) / area;
-    const float dzdy = ((p2.z - p0.z) * e1.x - (p1.z - p0.z) * e2.x) / area;
-    const float bias = kBiasConstant * resolvable(max(max(p0.z, p1.z), p2.z)) + kBiasSlope * max(abs(dzdx), abs(dzdy));
-    const bool tl0 = topLeft(p1.xy, p2.xy), tl1 = topLeft(p2.xy, p0.xy), tl2 = topLeft(p0.xy, p1.xy);
-    const bool exact = all(lessThanEqual(last - first, ivec2(kExactExtent)));
-    // Exact edge functions: sub-texel integers relative to the box's first centre, whose products fit
-    // in 32 bits for a box of up to 100 texels; a larger triangle (rare in a crowd's map) tests in float.
-    const vec2 origin = vec2(first) + 0.5;
-    const ivec2 q0 = ivec2(round((p0.xy - origin) * kSubTexel)), q1 = ivec2(round((p1.xy - origin) * kSubTexel)),
-                q2 = ivec2(round((p2.xy - origin) * kSubTexel));
-    for (int y = first.y; y <= last.y; ++y) {
-        for (int x = first.x; x <= last.x; ++x) {
-            bool inside;
-            if (exact) {
-                const ivec2 s = (ivec2(x, y) - first) * int(kSubTexel);
-                const int w0 = (q2.x - q1.x) * (s.y - q1.y) - (q2.y - q1.y) * (s.x - q1.x);
-                const int w1 = (q0.x - q2.x) * (s.y - q2.y) - (q0.y - q2.y) * (s.x - q2.x);
-                const int w2 = (q1.x - q0.x) * (s.y - q0.y) - (q1.y - q0.y) * (s.x - q0.x);
-                inside = (w0 > 0 || (w0 == 0 && tl0)) && (w1 > 0 || (w1 == 0 && tl1)) && (w2 > 0 || (w2 == 0 && tl2));
-            } else {
-                const vec2 s = vec2(x, y) + 0.5;
-                const float w0 = (p2.x - p1.x) * (s.y - p1.y) - (p2.y - p1.y) * (s.x - p1.x);
-                const float w1 = (p0.x - p2.x) * (s.y - p2.y) - (p0.y - p2.y) * (s.x - p2.x);
-                const float w2 = (p1.x - p0.x) * (s.y - p0.y) - (p1.y - p0.y) * (s.x - p0.x);
-                inside = (w0 > 0.0 || (w0 == 0.0 && tl0)) && (w1 > 0.0 || (w1 == 0.0 && tl1)) &&
-                         (w2 > 0.0 || (w2 == 0.0 && tl2));
-            }
-            if (!inside) continue;
-            const float z = p0.z + dzdx * (float(x) + 0.5 - p0.x) + dzdy * (float(y) + 0.5 - p0.y);
+    const TriangleCoverage t = triangleCoverage(p0.xy, p1.xy, p2.xy, ivec2(int(push.size)));
+    if (any(greaterThan(t.first, t.last))) return;
+    const vec2 slopes = triangleDepthSlopes(p0, p1, p2, area);
+    const float bias = kBiasConstant * resolvable(max(max(p0.z, p1.z), p2.z)) + kBiasSlope * max(abs(slopes.x), abs(slopes.y));
+    for (int y = t.first.y; y <= t.last.y; ++y) {
+        for (int x = t.first.x; x <= t.last.x; ++x) {
+            if (!triangleCovers(t, x, y)) continue;
+            const float z = p0.z + slopes.x * (float(x) + 0.5 - p0.x) + slopes.y * (float(y) + 0.5 - p0.y);
             if (z < 0.0 || z > 1.0) continue;  // clipped by the near and far planes, as the hardware clips
             writeDepth(ivec2(x, y), z + bias);
         }

@@ -51,12 +51,6 @@ RasterFrame renderFrame(const gpu::VulkanContext& context, test::TestRenderer& r
     return frame;
 }
 
-bool within(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance) {
-    for (int k = 0; k < 3; ++k)
-        if (std::abs(int(a.pixels[pixel * 4 + k]) - int(b.pixels[pixel * 4 + k])) > tolerance) return false;
-    return true;
-}
-
 test::RendererOptions rasterOptions(VkExtent2D size, render::RasterMode raster) {
     test::RendererOptions options;
     options.size = size;
@@ -66,11 +60,6 @@ test::RendererOptions rasterOptions(VkExtent2D size, render::RasterMode raster) 
     options.framesInFlight = 1;
     options.raster = raster;
     return options;
-}
-
-void keepImages(const std::string& name, const app::Rgba8Image& hardware, const app::Rgba8Image& compute) {
-    app::writePng(test::artifactPath(name + "-hardware.png"), hardware);
-    app::writePng(test::artifactPath(name + "-compute.png"), compute);
 }
 
 }  // namespace
@@ -106,11 +95,11 @@ TEST_F(GpuTest, ComputeRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     EXPECT_EQ(c.split.hardwareCount, 0u);
     std::size_t covered = 0, coveredClose = 0, coveredNear = 0, matching = 0;
     for (std::size_t i = 0; i < c.visibility.size(); ++i) {
-        matching += within(h.image, c.image, i, 2) ? 1 : 0;
+        matching += test::pixelWithin(h.image, c.image, i, 2) ? 1 : 0;
         if (c.visibility[i] == kEmpty) continue;
         ++covered;
-        coveredClose += within(h.image, c.image, i, 2) ? 1 : 0;
-        coveredNear += within(h.image, c.image, i, 24) ? 1 : 0;
+        coveredClose += test::pixelWithin(h.image, c.image, i, 2) ? 1 : 0;
+        coveredNear += test::pixelWithin(h.image, c.image, i, 24) ? 1 : 0;
     }
     const double all = double(matching) / double(c.visibility.size());
     const double close = double(coveredClose) / double(std::max<std::size_t>(covered, 1));
@@ -122,7 +111,7 @@ TEST_F(GpuTest, ComputeRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     EXPECT_GE(all, 0.995);
     EXPECT_GE(close, 0.95);
     EXPECT_GE(near, 0.99);
-    if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) keepImages("raster-mixed", h.image, c.image);
+    if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) test::keepRasterImages("raster-mixed", h.image, c.image);
 }
 
 namespace {
@@ -191,16 +180,16 @@ TEST_F(GpuTest, ComputeRasterMergesWithMeshesByDepth) {
     ASSERT_EQ(c.lods.characters[0] + c.lods.characters[1] + c.lods.characters[2], 1u);
     EXPECT_EQ(c.split.computeCount, 2u);
     std::size_t meshPixels = 0;
-    for (std::size_t i = 0; i < c.visibility.size(); ++i) meshPixels += within(mesh.image, background.image, i, 0) ? 0 : 1;
+    for (std::size_t i = 0; i < c.visibility.size(); ++i) meshPixels += test::pixelWithin(mesh.image, background.image, i, 0) ? 0 : 1;
     EXPECT_LT(meshPixels, c.visibility.size() / 4);  // the mesh's own pixels, not the whole picture
     std::map<std::uint32_t, std::size_t> overlap, matching, covered;  // by character: 1 behind, 2 in front
     for (std::size_t i = 0; i < c.visibility.size(); ++i) {
         if (c.visibility[i] == kEmpty) continue;
         const std::uint32_t character = c.impostorList[c.visibility[i] & 0xFFFFFFFFu];
         ++covered[character];
-        if (within(mesh.image, background.image, i, 0)) continue;  // the mesh does not cover it
+        if (test::pixelWithin(mesh.image, background.image, i, 0)) continue;  // the mesh does not cover it
         ++overlap[character];
-        matching[character] += within(h.image, c.image, i, 2) ? 1 : 0;
+        matching[character] += test::pixelWithin(h.image, c.image, i, 2) ? 1 : 0;
     }
     for (const std::uint32_t character : {1u, 2u}) {
         const double fraction = double(matching[character]) / double(std::max<std::size_t>(overlap[character], 1));
@@ -214,10 +203,10 @@ TEST_F(GpuTest, ComputeRasterMergesWithMeshesByDepth) {
     // Not trivially so: the mesh and each impostor differ over the overlap.
     std::size_t meshDiffers = 0;
     for (std::size_t i = 0; i < c.visibility.size(); ++i)
-        if (c.visibility[i] != kEmpty && !within(mesh.image, background.image, i, 0) && !within(h.image, mesh.image, i, 2))
+        if (c.visibility[i] != kEmpty && !test::pixelWithin(mesh.image, background.image, i, 0) && !test::pixelWithin(h.image, mesh.image, i, 2))
             ++meshDiffers;
     EXPECT_GE(meshDiffers, 30u);
-    if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) keepImages("raster-overlap", h.image, c.image);
+    if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) test::keepRasterImages("raster-overlap", h.image, c.image);
 }
 
 // The visibility buffer's ids: seven soldiers far apart, all impostors, rasterized in compute (five
@@ -339,10 +328,10 @@ TEST_F(GpuTest, AnImpostorCrossingAutosLimitKeepsItsPixels) {
         onCompute += a.split.computeCount, onHardware += a.split.hardwareCount;
         std::size_t pixels = 0, close = 0, near = 0;
         for (std::size_t i = 0; i < a.visibility.size(); ++i) {
-            if (within(h.image, e.image, i, 0) && within(a.image, e.image, i, 0)) continue;
+            if (test::pixelWithin(h.image, e.image, i, 0) && test::pixelWithin(a.image, e.image, i, 0)) continue;
             ++pixels;
-            close += within(h.image, a.image, i, 2) ? 1 : 0;
-            near += within(h.image, a.image, i, 24) ? 1 : 0;
+            close += test::pixelWithin(h.image, a.image, i, 2) ? 1 : 0;
+            near += test::pixelWithin(h.image, a.image, i, 24) ? 1 : 0;
         }
         std::printf("%.0f px: %s path, %zu soldier pixels, %.1f %% within 2/255, %.1f %% within 24/255\n", across,
                     a.split.computeCount ? "compute" : "hardware", pixels, 100.0 * double(close) / double(pixels),
@@ -350,7 +339,7 @@ TEST_F(GpuTest, AnImpostorCrossingAutosLimitKeepsItsPixels) {
         EXPECT_GT(pixels, 100u);
         EXPECT_GE(double(close) / double(pixels), 0.97) << "step " << step;
         EXPECT_GE(double(near) / double(pixels), 0.99) << "step " << step;
-        if (HasFailure()) keepImages("raster-switch", h.image, a.image);
+        if (HasFailure()) test::keepRasterImages("raster-switch", h.image, a.image);
     }
     EXPECT_GE(onCompute, 2u);
     EXPECT_GE(onHardware, 2u);

@@ -51,12 +51,6 @@ MeshFrame renderFrame(const gpu::VulkanContext& context, test::TestRenderer& ren
     return frame;
 }
 
-bool within(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance) {
-    for (int k = 0; k < 3; ++k)
-        if (std::abs(int(a.pixels[pixel * 4 + k]) - int(b.pixels[pixel * 4 + k])) > tolerance) return false;
-    return true;
-}
-
 test::RendererOptions meshOptions(VkExtent2D size, render::RasterMode raster) {
     test::RendererOptions options;
     options.size = size;
@@ -69,17 +63,21 @@ test::RendererOptions meshOptions(VkExtent2D size, render::RasterMode raster) {
     return options;
 }
 
+// The mixed scene's crowd: 600 soldiers and horses, 3:1, on a grid.
+crowd::Crowd mixedCrowd(const model::SkinnedModel& soldier, const model::SkinnedModel& horse) {
+    crowd::LayoutOptions layout;
+    layout.count = 600;
+    layout.weights = {3.0f, 1.0f};
+    const model::SkinnedModel* models[2] = {&soldier, &horse};
+    return crowd::Crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+}
+
 // The pose sphere in world space, as culling places it (shaders/cull.glsl.inc, worldSphere).
 glm::vec4 worldSphere(const model::SkinnedModel& model, const crowd::Character& character) {
     const glm::vec3 local = glm::vec3(model.poseSphere) * character.scale;
     const float s = std::sin(character.heading), c = std::cos(character.heading);
     const glm::vec3 turned(c * local.x + s * local.z, local.y, c * local.z - s * local.x);
     return glm::vec4(character.position + turned, model.poseSphere.w * character.scale);
-}
-
-void keepImages(const std::string& name, const app::Rgba8Image& hardware, const app::Rgba8Image& compute) {
-    app::writePng(test::artifactPath(name + "-hardware.png"), hardware);
-    app::writePng(test::artifactPath(name + "-compute.png"), compute);
 }
 
 }  // namespace
@@ -92,11 +90,7 @@ void keepImages(const std::string& name, const app::Rgba8Image& hardware, const 
 TEST_F(GpuTest, MeshRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const model::SkinnedModel horse = test::loadModel("horse", 1);
-    crowd::LayoutOptions layout;
-    layout.count = 600;
-    layout.weights = {3.0f, 1.0f};
-    const model::SkinnedModel* models[2] = {&soldier, &horse};
-    crowd::Crowd crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+    crowd::Crowd crowd = mixedCrowd(soldier, horse);
     test::RendererOptions options = meshOptions({480, 270}, render::RasterMode::Hardware);
     test::TestRenderer hardware(*device, crowd, options);
     options.raster = render::RasterMode::Compute;
@@ -113,11 +107,11 @@ TEST_F(GpuTest, MeshRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     EXPECT_LE(c.split.computeCount, meshes);
     std::size_t covered = 0, coveredClose = 0, coveredNear = 0, matching = 0;
     for (std::size_t i = 0; i < c.visibility.size(); ++i) {
-        matching += within(h.image, c.image, i, 2) ? 1 : 0;
+        matching += test::pixelWithin(h.image, c.image, i, 2) ? 1 : 0;
         if (c.visibility[i] == kEmpty) continue;
         ++covered;
-        coveredClose += within(h.image, c.image, i, 2) ? 1 : 0;
-        coveredNear += within(h.image, c.image, i, 24) ? 1 : 0;
+        coveredClose += test::pixelWithin(h.image, c.image, i, 2) ? 1 : 0;
+        coveredNear += test::pixelWithin(h.image, c.image, i, 24) ? 1 : 0;
     }
     const double all = double(matching) / double(c.visibility.size());
     const double close = double(coveredClose) / double(std::max<std::size_t>(covered, 1));
@@ -129,7 +123,7 @@ TEST_F(GpuTest, MeshRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     EXPECT_GE(all, 0.995);
     EXPECT_GE(close, 0.98);
     EXPECT_GE(near, 0.995);
-    if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) keepImages("mesh-raster-mixed", h.image, c.image);
+    if (HasFailure() || std::getenv("CROWD_KEEP_IMAGES")) test::keepRasterImages("mesh-raster-mixed", h.image, c.image);
 }
 
 // Ids: five soldiers far apart at different distances, every one in compute. Every covered pixel's id
@@ -258,10 +252,10 @@ TEST_F(GpuTest, AMeshCrossingAutosLimitKeepsItsPixels) {
         onHardware += 1 - a.split.computeCount;
         std::size_t pixels = 0, close = 0, near = 0;
         for (std::size_t i = 0; i < h.image.pixels.size() / 4; ++i) {
-            if (within(h.image, e.image, i, 0) && within(a.image, e.image, i, 0)) continue;
+            if (test::pixelWithin(h.image, e.image, i, 0) && test::pixelWithin(a.image, e.image, i, 0)) continue;
             ++pixels;
-            close += within(h.image, a.image, i, 2) ? 1 : 0;
-            near += within(h.image, a.image, i, 24) ? 1 : 0;
+            close += test::pixelWithin(h.image, a.image, i, 2) ? 1 : 0;
+            near += test::pixelWithin(h.image, a.image, i, 24) ? 1 : 0;
         }
         std::printf("%.0f px: %s path, %zu soldier pixels, %.1f %% within 2/255, %.1f %% within 24/255\n", across,
                     a.split.computeCount ? "compute" : "hardware", pixels, 100.0 * double(close) / double(pixels),
@@ -269,7 +263,7 @@ TEST_F(GpuTest, AMeshCrossingAutosLimitKeepsItsPixels) {
         EXPECT_GT(pixels, 100u);
         EXPECT_GE(double(close) / double(pixels), 0.98) << "step " << step;
         EXPECT_GE(double(near) / double(pixels), 0.995) << "step " << step;
-        if (HasFailure()) keepImages("mesh-raster-switch", h.image, a.image);
+        if (HasFailure()) test::keepRasterImages("mesh-raster-switch", h.image, a.image);
     }
     EXPECT_GE(onCompute, 2u);
     EXPECT_GE(onHardware, 2u);
@@ -327,7 +321,7 @@ TEST_F(GpuTest, MeshRasterFollowsTheTopLeftRule) {
     auto edge = [](glm::vec2 a, glm::vec2 b, glm::vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
     std::size_t hardwarePixels = 0, computePixels = 0, same = 0, onEdges = 0, byRule = 0;
     for (std::size_t i = 0; i < c.visibility.size(); ++i) {
-        const bool hw = !within(h.image, e.image, i, 0), cs = c.visibility[i] != kEmpty;
+        const bool hw = !test::pixelWithin(h.image, e.image, i, 0), cs = c.visibility[i] != kEmpty;
         hardwarePixels += hw, computePixels += cs, same += hw == cs;
         if (!cs) continue;
         const std::uint32_t triangle = (std::uint32_t(c.visibility[i]) & ~MESH_RASTER_ID_BIT) & ((1u << raster.triangleBits()) - 1u);
@@ -351,7 +345,7 @@ TEST_F(GpuTest, MeshRasterFollowsTheTopLeftRule) {
     EXPECT_EQ(same, c.visibility.size());
     EXPECT_GT(onEdges, 16u);  // both diagonals and the outer left and top edges
     EXPECT_EQ(byRule, computePixels);
-    if (HasFailure()) keepImages("mesh-raster-top-left", h.image, c.image);
+    if (HasFailure()) test::keepRasterImages("mesh-raster-top-left", h.image, c.image);
 }
 
 // The library refuses a mesh limit that is negative (but -1, automatic) or not a number, in one line.
@@ -377,11 +371,7 @@ TEST_F(GpuTest, MeshRasterLimitIsChecked) {
 TEST_F(GpuTest, AutoEngagesTheMeshPathAfterAFrameOfManyTriangles) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const model::SkinnedModel horse = test::loadModel("horse", 1);
-    crowd::LayoutOptions layout;
-    layout.count = 600;
-    layout.weights = {3.0f, 1.0f};
-    const model::SkinnedModel* models[2] = {&soldier, &horse};
-    crowd::Crowd crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+    crowd::Crowd crowd = mixedCrowd(soldier, horse);
     test::RendererOptions options = meshOptions({480, 270}, render::RasterMode::Hardware);
     test::TestRenderer hardware(*device, crowd, options);
     options.raster = render::RasterMode::Auto;
@@ -404,8 +394,8 @@ TEST_F(GpuTest, AutoEngagesTheMeshPathAfterAFrameOfManyTriangles) {
         if (frame > 0) EXPECT_GT(e.split.computeCount, 20u) << "frame " << frame;
         std::size_t close = 0, same = 0;
         for (std::size_t p = 0; p < h.image.pixels.size() / 4; ++p) {
-            close += within(h.image, e.image, p, 2) ? 1 : 0;
-            same += within(h.image, i.image, p, 0) ? 1 : 0;
+            close += test::pixelWithin(h.image, e.image, p, 2) ? 1 : 0;
+            same += test::pixelWithin(h.image, i.image, p, 0) ? 1 : 0;
         }
         EXPECT_GE(double(close) / double(h.image.pixels.size() / 4), 0.995) << "frame " << frame;
         EXPECT_EQ(same, h.image.pixels.size() / 4) << "frame " << frame;

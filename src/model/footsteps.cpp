@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "anim/local_to_model.h"
-#include "anim/sample_clip.h"
 #include "gpu/error.h"
+#include "model/clip_skinning.h"
 #include "model/measure_root_motion.h"
 
 namespace model {
@@ -44,17 +43,6 @@ std::vector<std::uint32_t> footVertices(const SkinnedModel& model, std::uint32_t
         if (weight >= 0.5f) result.push_back(static_cast<std::uint32_t>(v));
     }
     return result;
-}
-
-// The skinning matrices (model space, joint matrix times inverse bind) of the clip at `time`.
-std::vector<glm::mat4> skinMatrices(const SkinnedModel& model, const anim::Clip& clip, float time) {
-    const anim::Skeleton& skeleton = model.skeleton;
-    std::vector<anim::Transform> locals(skeleton.jointCount());
-    std::vector<glm::mat4> global(skeleton.jointCount());
-    anim::sampleClip(clip, time, skeleton.restPose, locals);
-    anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, global);
-    for (std::size_t j = 0; j < global.size(); ++j) global[j] = global[j] * skeleton.inverseBind[j];
-    return global;
 }
 
 // The given vertices skinned by `matrices`, in model space (the clip in place).
@@ -146,7 +134,7 @@ std::vector<anim::ClipEvent> findFootsteps(const SkinnedModel& model, const anim
     // Each foot's vertices at every step, in model space: heights do not depend on root motion, so
     // feet that never lift (idle) are known before it is measured.
     std::vector<std::vector<glm::mat4>> matrices(static_cast<std::size_t>(steps));
-    for (int i = 0; i < steps; ++i) matrices[static_cast<std::size_t>(i)] = skinMatrices(model, clip, dt * static_cast<float>(i));
+    for (int i = 0; i < steps; ++i) matrices[static_cast<std::size_t>(i)] = clipSkinningMatrices(model, clip, dt * static_cast<float>(i));
     std::vector<std::vector<std::vector<glm::vec3>>> footPoses;
     std::vector<std::uint32_t> lifting;
     for (std::uint32_t foot : feet) {

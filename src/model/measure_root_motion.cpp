@@ -5,8 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "anim/local_to_model.h"
-#include "anim/sample_clip.h"
+#include "model/clip_skinning.h"
 
 namespace model {
 namespace {
@@ -22,12 +21,7 @@ constexpr int kPlantedWindow = 2;
 constexpr float kInPlace = 0.02f;
 
 std::vector<glm::vec3> skinnedPositions(const SkinnedModel& model, const anim::Clip& clip, float time) {
-    const anim::Skeleton& skeleton = model.skeleton;
-    std::vector<anim::Transform> locals(skeleton.jointCount());
-    std::vector<glm::mat4> global(skeleton.jointCount());
-    anim::sampleClip(clip, time, skeleton.restPose, locals);
-    anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, global);
-    for (std::size_t j = 0; j < global.size(); ++j) global[j] = global[j] * skeleton.inverseBind[j];
+    const std::vector<glm::mat4> global = clipSkinningMatrices(model, clip, time);
     std::vector<glm::vec3> positions(model.vertices.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const gpu::SkinVertex& v = model.vertices[i];

@@ -10,6 +10,7 @@
 #include "gpu/error.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
+#include "render/raster_mode.h"
 #include "impostor_raster.comp.spv.h"
 #include "impostor_resolve.frag.spv.h"
 #include "impostor_resolve.vert.spv.h"
@@ -35,13 +36,7 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
                                const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
                                const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels)
     : context_(context), crowd_(crowd), lists_(lists), atlas_(atlas), limitPixels_(limitPixels), slots_(framesInFlight) {
-    if (!context.int64Atomics)
-        throw gpu::Error("the compute rasterizer needs the features shaderInt64 and shaderBufferInt64Atomics, which " +
-                             context.description.name + " lacks or the device was created without",
-                         gpu::ErrorKind::Unsupported);
-    if (target.samples != VK_SAMPLE_COUNT_1_BIT)
-        throw gpu::Error("the compute rasterizer draws single-sampled targets only (--aa off)",
-                         gpu::ErrorKind::Unsupported);
+    requireComputeRaster(context, target);
     try {
         split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                    gpu::MemoryUse::DeviceLocal, "impostor raster split");

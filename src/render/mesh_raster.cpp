@@ -9,6 +9,7 @@
 #include "gpu/error.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
+#include "render/raster_mode.h"
 #include "impostor_resolve.vert.spv.h"
 #include "mesh_raster.comp.spv.h"
 #include "mesh_raster_split.comp.spv.h"
@@ -55,13 +56,7 @@ MeshRaster::MeshRaster(const gpu::VulkanContext& context, const GeometryPool& po
                        std::uint32_t framesInFlight, float limitPixels)
     : context_(context), pool_(pool), crowd_(crowd), lists_(lists), target_(target), limitPixels_(limitPixels),
       triangleBits_(meshRasterTriangleBits(largestTriangleCount(pool))), slots_(framesInFlight), sceneSetLayout_(sceneSetLayout) {
-    if (!context.int64Atomics)
-        throw gpu::Error("the compute rasterizer needs the features shaderInt64 and shaderBufferInt64Atomics, which " +
-                             context.description.name + " lacks or the device was created without",
-                         gpu::ErrorKind::Unsupported);
-    if (target.samples != VK_SAMPLE_COUNT_1_BIT)
-        throw gpu::Error("the compute rasterizer draws single-sampled targets only (--aa off)",
-                         gpu::ErrorKind::Unsupported);
+    requireComputeRaster(context, target);
     if (triangleBits_ > 24)
         throw gpu::Error("the compute rasterizer's ids hold up to 2^24 triangles a character; a model has more",
                          gpu::ErrorKind::Unsupported);

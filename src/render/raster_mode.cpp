@@ -1,5 +1,9 @@
 #include "render/raster_mode.h"
 
+#include "gpu/error.h"
+#include "gpu/vulkan_context.h"
+#include "render/target_format.h"
+
 namespace render {
 
 const char* rasterModeName(RasterMode mode) {
@@ -15,6 +19,16 @@ std::optional<RasterMode> parseRasterMode(std::string_view name) {
     for (const RasterMode mode : {RasterMode::Hardware, RasterMode::Compute, RasterMode::Auto})
         if (name == rasterModeName(mode)) return mode;
     return std::nullopt;
+}
+
+void requireComputeRaster(const gpu::VulkanContext& context, const TargetFormat& target) {
+    if (!context.int64Atomics)
+        throw gpu::Error("the compute rasterizer needs the features shaderInt64 and shaderBufferInt64Atomics, which " +
+                             context.description.name + " lacks or the device was created without",
+                         gpu::ErrorKind::Unsupported);
+    if (target.samples != VK_SAMPLE_COUNT_1_BIT)
+        throw gpu::Error("the compute rasterizer draws single-sampled targets only (--aa off)",
+                         gpu::ErrorKind::Unsupported);
 }
 
 }  // namespace render

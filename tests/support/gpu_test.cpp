@@ -383,6 +383,17 @@ double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image&
     return static_cast<double>(matching) / static_cast<double>(a.pixels.size() / 4);
 }
 
+bool pixelWithin(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance) {
+    for (int k = 0; k < 3; ++k)
+        if (std::abs(int(a.pixels[pixel * 4 + k]) - int(b.pixels[pixel * 4 + k])) > tolerance) return false;
+    return true;
+}
+
+void keepRasterImages(const std::string& name, const app::Rgba8Image& hardware, const app::Rgba8Image& compute) {
+    app::writePng(artifactPath(name + "-hardware.png"), hardware);
+    app::writePng(artifactPath(name + "-compute.png"), compute);
+}
+
 std::string artifactPath(const std::string& name) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "crowd-test-artifacts";
     std::filesystem::create_directories(dir);

@@ -128,6 +128,10 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, TestRen
 
 // Fraction of pixels whose every channel differs by at most `tolerance` (out of 255).
 double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b, int tolerance);
+// Whether pixel `pixel` (row-major) of the two images differs by at most `tolerance` in R, G and B.
+bool pixelWithin(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance);
+// Keeps a hardware-raster and a compute-raster picture for a look (artifactPath(name + "-hardware.png"), ...).
+void keepRasterImages(const std::string& name, const app::Rgba8Image& hardware, const app::Rgba8Image& compute);
 
 // A crowd of two models side by side against the same characters drawn as two one-model crowds and as
 // an empty scene: pixels that only the first (second) crowd covers, and the fraction of the mixed
