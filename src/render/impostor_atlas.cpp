@@ -102,8 +102,11 @@ ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, s
         record.cells = glm::uvec4(first, clipsOf(*models[m]), frames[m], sets[m]);
         record.views = glm::uvec4(settings.azimuths, settings.elevations, plan.cellsPerRow, perLayer);
         record.square = records[m].sphere;
-        for (std::uint32_t s = 0; s < sets[m]; ++s) record.propSets[s] = propSets[m][s];
-        if (m >= propSets.size()) record.propSets[0] = model::propsMostCarry(*models[m]);
+        // A model given no masks gets one set: the props most carry by default, as its pose sphere holds.
+        if (m < propSets.size() && !propSets[m].empty())
+            for (std::uint32_t s = 0; s < sets[m]; ++s) record.propSets[s] = propSets[m][s];
+        else
+            record.propSets[0] = model::propsMostCarry(*models[m]);
         const std::uint32_t cellsPerSet = record.cells.y * record.cells.z * settings.azimuths * settings.elevations;
         for (std::uint32_t s = 0; s < IMPOSTOR_SETS; ++s) {
             gpu::ImpostorModel entry = record;
