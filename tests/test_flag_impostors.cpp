@@ -250,6 +250,9 @@ TEST_F(GpuTest, AFlagCarrierWhoseSetTheBudgetDroppedShowsTheNearestSet) {
     const std::uint64_t oneSet = without.atlas->plan().bytesOf(0) / 2;
     const ImpostorShot carrier = renderImpostor(*context, soldier, kRifleAndFlag, kRifle, nullptr, oneSet);
     ASSERT_EQ(carrier.atlas->plan().setCount(0), 1u);
+    std::printf("atlas bytes: two sets %.1f MiB, one set %.1f MiB\n", static_cast<double>(without.atlas->bytes()) / 1048576.0,
+                static_cast<double>(carrier.atlas->bytes()) / 1048576.0);
+    EXPECT_EQ(carrier.atlas->plan().bytes() * 2, without.atlas->plan().bytes());
     EXPECT_EQ(carrier.atlas->plan().set(0, 0).propSets.x, kRifle);
     EXPECT_EQ(carrier.atlas->plan().set(0, 0).cells.z, without.atlas->plan().set(0, 0).cells.z);  // frames kept
     EXPECT_EQ(test::fractionOfMatchingPixels(carrier.image, without.image, 0), 1.0);
