@@ -134,13 +134,21 @@ struct DrawTotals {
     uvec4 fading;         // x: fading characters' colour draws (their finer share, dithered), in their own list
 };
 
-// One model's impostors: where its cells are in the atlas and how they were captured. Cell of
-// (clip, frame, elevation, azimuth) = first + ((clip x frames + frame) x elevations + elevation) x
+// Cell sets a model's impostors may have: one per combination of props (mask) its characters carry,
+// the most carried first; a character whose mask has no set shows the nearest one
+// (shaders/impostor_prop_set.glsl.inc, render/impostor_prop_sets.h). The impostor model table holds
+// IMPOSTOR_SETS entries a model: model m's set s at m x IMPOSTOR_SETS + s (entries past its sets repeat set 0).
+#define IMPOSTOR_SETS 4
+
+// One cell set of a model's impostors: where its cells are in the atlas and how they were captured.
+// Cell of (clip, frame, elevation, azimuth) = first + ((clip x frames + frame) x elevations + elevation) x
 // azimuths + azimuth (shaders/impostor_cell.glsl.inc).
 struct ImpostorModel {
-    uvec4 cells;  // x: first cell in the atlas, y: clips, z: frames per clip, w: unused
+    uvec4 cells;  // x: first cell of this set in the atlas, y: clips, z: frames per clip, w: the model's sets
     uvec4 views;  // x: azimuths, y: elevations, z: cells per atlas row, w: cells per atlas layer
-    vec4 square;  // model space: xyz centre of every cell's square (the pose sphere's), w: half its side
+    vec4 square;  // model space: xyz centre of every cell's square (the pose sphere's), w: half its side (this
+                  // set's: a prop beyond the pose sphere, the flag, widens it)
+    uvec4 propSets;  // the props masks of the model's sets 0..cells.w-1 (the same in each of its entries)
 };
 
 // The impostor level of a frame: culling counts its characters, finalize turns the count into one

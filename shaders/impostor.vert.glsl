@@ -10,6 +10,7 @@
 // silhouette as the light sees it, at the pose the colour pass shows.
 #include "gpu_types.h"
 #include "impostor_set.glsl.inc"
+#include "impostor_prop_set.glsl.inc"
 #include "impostor_pose.glsl.inc"
 #include "impostor_cell.glsl.inc"
 #include "fade_dither.glsl.inc"
@@ -34,7 +35,7 @@ void main() {
     const vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
     uint index = impostors[gl_VertexIndex / 4];
     CharacterRecord character = characters[index];
-    ImpostorQuad q = impostorQuad(character, impostorModels[character.ids.x], cameraPosition.xyz, SHADOW_PASS,
+    ImpostorQuad q = impostorQuad(character, impostorModelOf(character), cameraPosition.xyz, SHADOW_PASS,
                                   scene.lightDirection.xyz);
     if (!BLEND) q.blend = impostorNearest(q.blend);
     vec2 corner = corners[gl_VertexIndex % 4];

@@ -33,6 +33,7 @@ layout(std430, set = 0, binding = 7) buffer LargeImpostors { uint largeImpostors
 // Every character's state word (gpu_types.h: its fade share, FADE_SHIFT), written by culling.
 layout(std430, set = 0, binding = 8) readonly buffer CharacterStates { uint characterStates[]; };
 layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
+#include "impostor_prop_set.glsl.inc"
 
 // Impostors this workgroup rasterized: summed in shared memory and added to the split once per
 // workgroup, since millions of atomics on one word would serialize (a few ms for 10,000,000 on one
@@ -51,7 +52,7 @@ Footprint footprint(uint index) {
     const vec2 corners[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
     Footprint f;
     CharacterRecord record = characters[impostors[index]];
-    f.quad = impostorQuad(record, impostorModels[record.ids.x], raster.cameraPosition.xyz, false, vec3(0.0));
+    f.quad = impostorQuad(record, impostorModelOf(record), raster.cameraPosition.xyz, false, vec3(0.0));
     if (raster.limits.w == 0u) f.quad.blend = impostorNearest(f.quad.blend);
     f.clip = impostorQuadClip(f.quad, raster.viewProjection);
     vec2 low = vec2(3.0e38), high = vec2(-3.0e38);

@@ -9,6 +9,7 @@
 #include "gpu_types.h"
 #include "shading.glsl.inc"
 #include "impostor_set.glsl.inc"
+#include "impostor_prop_set.glsl.inc"
 #include "impostor_pose.glsl.inc"
 #include "impostor_cell.glsl.inc"
 #include "impostor_quad.glsl.inc"
@@ -32,7 +33,7 @@ void main() {
     uint depthBits = uint(word >> 32);
     if (depthBits == VISIBILITY_EMPTY_HIGH) discard;
     CharacterRecord character = characters[impostors[uint(word & 0xFFFFFFFFul)]];
-    ImpostorQuad q = impostorQuad(character, impostorModels[character.ids.x], cameraPosition.xyz, false, vec3(0.0));
+    ImpostorQuad q = impostorQuad(character, impostorModelOf(character), cameraPosition.xyz, false, vec3(0.0));
     const bool blend = cameraPosition.w != 0.0;
     if (!blend) q.blend = impostorNearest(q.blend);
     ImpostorPixel p = impostorPixel(impostorQuadClip(q, scene.viewProjection), vec2(pixel), viewport.zw);

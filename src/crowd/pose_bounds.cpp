@@ -62,12 +62,11 @@ ClipSamples sampleTimes(const anim::Clip& clip) {
 
 // The model's vertices that differ in position or skin. Copies split only for normals, materials or
 // texture coordinates skin to the same place (the Fox has 290 distinct of 1,728).
-model::SkinnedModel distinctPositions(const model::SkinnedModel& model) {
+model::SkinnedModel distinctPositions(const model::SkinnedModel& model, std::uint32_t carried) {
     // Position, joints and weights as bits: equal bits skin equally.
     using Key = std::array<std::uint32_t, 12>;
     std::set<Key> seen;
     model::SkinnedModel distinct;
-    const std::uint32_t carried = model::propsMostCarry(model);
     for (const gpu::SkinVertex& v : model.vertices) {
         // A rare prop (the soldier's flag) would grow every character's sphere, which sizes levels of
         // detail and impostor cells too: it is left out (docs/props.md).
@@ -130,7 +129,7 @@ glm::dvec4 unsampledPoses(const model::SkinnedModel& model) {
 
 glm::vec4 computePoseSphere(const model::SkinnedModel& model) {
     if (model.vertices.empty()) return glm::vec4(0.0f);
-    const model::SkinnedModel distinct = distinctPositions(model);
+    const model::SkinnedModel distinct = distinctPositions(model, model::propsMostCarry(model));
     // Two passes over the poses (the box, then the farthest point from its centre) instead of keeping
     // every pose's points: poses x vertices would be hundreds of megabytes for a long clip.
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
@@ -141,6 +140,19 @@ glm::vec4 computePoseSphere(const model::SkinnedModel& model) {
     glm::dvec4 sphere(center, radius * (1.0 + kMargin));
     if (const glm::dvec4 unsampled = unsampledPoses(model); unsampled.w > 0.0) sphere = enclose(sphere, unsampled);
     return glm::vec4(sphere);
+}
+
+float poseRadiusAbout(const model::SkinnedModel& model, const glm::vec3& centre, std::uint32_t carried) {
+    if (model.vertices.empty()) return 0.0f;
+    const model::SkinnedModel distinct = distinctPositions(model, carried);
+    const glm::dvec3 c(centre);
+    double radius = 0.0;
+    forEachSampledPoint(model, distinct, [&](const glm::dvec3& p) { radius = std::max(radius, glm::length(p - c)); });
+    radius *= 1.0 + kMargin;
+    // Thinly sampled clips: the ball about the origin that bounds their poses, seen from the centre.
+    if (const glm::dvec4 unsampled = unsampledPoses(model); unsampled.w > 0.0)
+        radius = std::max(radius, glm::length(c) + unsampled.w);
+    return static_cast<float>(radius);
 }
 
 }  // namespace crowd

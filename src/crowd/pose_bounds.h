@@ -1,6 +1,8 @@
 #pragma once
 // The sphere that holds a character in every pose its clips can give it: what culling tests. Found
 // once per model by skinning each clip on the CPU at many times.
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include "model/skinned_model.h"
@@ -17,5 +19,11 @@ namespace crowd {
 // skinnings of the model's distinct (position, skin) vertices per sample, memory for one pose: 5 to
 // 40 ms for the built-in and shared models (the soldier, with 4.8 s of clips, about 20 ms).
 glm::vec4 computePoseSphere(const model::SkinnedModel& model);
+
+// The radius about `centre` that holds every pose (sampled as above, with the same margin) of the model
+// carrying the props in `carried` (bit k: prop k). The impostor cells of characters carrying a prop the
+// pose sphere leaves out (the soldier's flag) are framed by it about the pose sphere's centre
+// (render/impostor_atlas.h). About 20 ms for the soldier.
+float poseRadiusAbout(const model::SkinnedModel& model, const glm::vec3& centre, std::uint32_t carried);
 
 }  // namespace crowd

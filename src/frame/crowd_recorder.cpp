@@ -10,6 +10,7 @@
 #include "gpu/setup_queue.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "render/impostor_prop_sets.h"
 
 namespace frame {
 namespace {
@@ -330,10 +331,10 @@ void CrowdRecorder::enableImpostors() {
         scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), pool_.palette(), pool_.texturedMaterials(), 0.0f));
         // The atlas keeps the context it was made with alive: another recorder may share it.
         atlas_ = std::shared_ptr<const render::ImpostorAtlas>(
-            new render::ImpostorAtlas(context_, pool_, crowd_.models(), scene_.setLayout(), scene_.set(0),
-                                      impostorSettings_),
+            new render::ImpostorAtlas(context_, pool_, crowd_.models(), render::impostorPropSets(crowd_),
+                                      scene_.setLayout(), scene_.set(0), impostorSettings_),
             [owner = contextOwner_](const render::ImpostorAtlas* atlas) { delete atlas; });
-    } else if (atlas_->models().size() != pool_.modelCount()) {
+    } else if (atlas_->plan().modelCount() != pool_.modelCount()) {
         throw gpu::Error("impostors: the atlas given was baked for other models");
     }
     render::ImpostorSplitBuffers split;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/vulkan_context.h"
+#include "render/impostor_prop_sets.h"
 #include "render/mesh_raster.h"
 #include "skin/skin_target_layout.h"
 #include "skin/skinned_capacity.h"
@@ -77,7 +78,7 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
     if (options.cull.impostors) {
         std::vector<gpu::ModelRecord> records(crowd.models().size());
         plan.items.push_back(
-            {"impostor atlas", render::planImpostors(crowd.models(), records, options.impostorSettings).bytes()});
+            {"impostor atlas", render::planImpostors(crowd.models(), records, render::impostorPropSets(crowd), options.impostorSettings).bytes()});
         const std::uint64_t draws = (n + IMPOSTOR_QUADS_PER_DRAW - 1) / IMPOSTOR_QUADS_PER_DRAW;
         plan.items.push_back({"impostor quad indices and draws",
                               std::uint64_t{IMPOSTOR_QUADS_PER_DRAW} * 6 * sizeof(std::uint32_t) +

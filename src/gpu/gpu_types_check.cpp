@@ -23,7 +23,8 @@ static_assert(offsetof(DrawIndexedCommand, vertexOffset) == offsetof(VkDrawIndex
 static_assert(offsetof(DrawIndexedCommand, firstInstance) == offsetof(VkDrawIndexedIndirectCommand, firstInstance));
 // emitDispatch is read by vkCmdDispatchIndirect: 16-byte aligned after four uints.
 static_assert(sizeof(DrawTotals) == 48 && offsetof(DrawTotals, emitDispatch) == 16 && offsetof(DrawTotals, fading) == 32);
-static_assert(sizeof(ImpostorModel) == 48 && offsetof(ImpostorModel, views) == 16 && offsetof(ImpostorModel, square) == 32);
+static_assert(sizeof(ImpostorModel) == 64 && offsetof(ImpostorModel, views) == 16 && offsetof(ImpostorModel, square) == 32 &&
+              offsetof(ImpostorModel, propSets) == 48);
 // Written with atomics, one uint at a time; the draws follow the header as VkDrawIndexedIndirectCommands.
 static_assert(sizeof(ImpostorFrame) == 16 && offsetof(ImpostorFrame, demoted) == 8);
 // splitDispatch is read by vkCmdDispatchIndirect; the one-workgroup scans split each histogram evenly.

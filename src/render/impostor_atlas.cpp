@@ -7,6 +7,7 @@
 
 #include "anim/local_to_model.h"
 #include "anim/props_carried.h"
+#include "crowd/pose_bounds.h"
 #include "model/attach_prop.h"
 #include "anim/sample_clip.h"
 #include "anim/skinning_matrices.h"
@@ -64,8 +65,8 @@ void transition(VkCommandBuffer cmd, VkImage image, std::uint32_t firstMip, std:
 }  // namespace
 
 std::uint64_t ImpostorPlan::bytesOf(std::uint32_t model) const {
-    const gpu::ImpostorModel& m = models[model];
-    return static_cast<std::uint64_t>(m.cells.y) * m.cells.z * m.views.x * m.views.y * cellBytes(cellSize);
+    const gpu::ImpostorModel& m = set(model, 0);
+    return static_cast<std::uint64_t>(m.cells.w) * m.cells.y * m.cells.z * m.views.x * m.views.y * cellBytes(cellSize);
 }
 
 std::uint64_t ImpostorPlan::bytes() const {
@@ -74,14 +75,19 @@ std::uint64_t ImpostorPlan::bytes() const {
 }
 
 ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, std::span<const gpu::ModelRecord> records,
-                           const ImpostorSettings& settings) {
-    // One cell size for the whole atlas; each model's frames per clip shrink first, since a far
-    // character's animation tolerates coarser steps better than a blurrier picture.
+                           std::span<const std::vector<std::uint32_t>> propSets, const ImpostorSettings& settings) {
+    // One cell size for the whole atlas. Over a model's budget its rarest cell sets go first (their
+    // carriers show the nearest set: a missing flag on a few), then its frames per clip shrink, since a
+    // far character's animation tolerates coarser steps better than a blurrier picture.
     std::uint32_t cellSize = std::max(settings.cellSize, kSmallestCell);
     std::vector<std::uint32_t> frames(models.size(), std::max(settings.framesPerClip, 1u));
+    std::vector<std::uint32_t> sets(models.size(), 1u);
     const std::uint64_t views = static_cast<std::uint64_t>(settings.azimuths) * settings.elevations;
     for (std::size_t m = 0; m < models.size(); ++m) {
-        auto bytes = [&] { return clipsOf(*models[m]) * frames[m] * views * cellBytes(cellSize); };
+        if (m < propSets.size())
+            sets[m] = std::clamp<std::uint32_t>(static_cast<std::uint32_t>(propSets[m].size()), 1u, IMPOSTOR_SETS);
+        auto bytes = [&] { return sets[m] * clipsOf(*models[m]) * frames[m] * views * cellBytes(cellSize); };
+        while (bytes() > settings.budgetPerModel && sets[m] > 1) --sets[m];
         while (bytes() > settings.budgetPerModel && frames[m] > 4) frames[m] /= 2;
         while (bytes() > settings.budgetPerModel && cellSize > 16) cellSize /= 2;
     }
@@ -93,11 +99,21 @@ ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, s
     std::uint32_t first = 0;
     for (std::size_t m = 0; m < models.size(); ++m) {
         gpu::ImpostorModel record{};
-        record.cells = glm::uvec4(first, clipsOf(*models[m]), frames[m], 0u);
+        record.cells = glm::uvec4(first, clipsOf(*models[m]), frames[m], sets[m]);
         record.views = glm::uvec4(settings.azimuths, settings.elevations, plan.cellsPerRow, perLayer);
         record.square = records[m].sphere;
-        first += record.cells.y * record.cells.z * settings.azimuths * settings.elevations;
-        plan.models.push_back(record);
+        // A model given no masks gets one set: the props most carry by default, as its pose sphere holds.
+        if (m < propSets.size() && !propSets[m].empty())
+            for (std::uint32_t s = 0; s < sets[m]; ++s) record.propSets[s] = propSets[m][s];
+        else
+            record.propSets[0] = model::propsMostCarry(*models[m]);
+        const std::uint32_t cellsPerSet = record.cells.y * record.cells.z * settings.azimuths * settings.elevations;
+        for (std::uint32_t s = 0; s < IMPOSTOR_SETS; ++s) {
+            gpu::ImpostorModel entry = record;
+            if (s < sets[m]) entry.cells.x = first + s * cellsPerSet;
+            plan.models.push_back(entry);
+        }
+        first += sets[m] * cellsPerSet;
     }
     plan.layers = std::max(1u, (first + perLayer - 1) / perLayer);
     return plan;
@@ -106,41 +122,58 @@ ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, s
 std::vector<gpu::BoneRows> impostorPoses(std::span<const model::SkinnedModel* const> models,
                                          std::span<const gpu::ImpostorModel> plan, std::vector<std::uint32_t>& firstBone) {
     std::vector<gpu::BoneRows> bones;
-    firstBone.clear();
+    firstBone.assign(plan.size(), 0u);
     for (std::size_t m = 0; m < models.size(); ++m) {
         const model::SkinnedModel& model = *models[m];
         const anim::Skeleton& skeleton = model.skeleton;
-        firstBone.push_back(static_cast<std::uint32_t>(bones.size()));
         std::vector<anim::Transform> locals(skeleton.restPose);
         std::vector<glm::mat4> modelSpace(skeleton.jointCount());
         std::vector<gpu::BoneRows> pose(skeleton.jointCount());
-        const std::uint32_t carried = model::propsMostCarry(model);
-        for (std::uint32_t clip = 0; clip < plan[m].cells.y; ++clip) {
-            for (std::uint32_t frame = 0; frame < plan[m].cells.z; ++frame) {
-                // Frame k at phase k / frames of the clip, as a character at that phase samples it.
-                locals = skeleton.restPose;
-                if (clip < model.clips.size()) {
-                    const float time = model.clips[clip].duration * static_cast<float>(frame) / static_cast<float>(plan[m].cells.z);
-                    anim::sampleClip(model.clips[clip], time, skeleton.restPose, locals);
+        const gpu::ImpostorModel& first = plan[m * IMPOSTOR_SETS];
+        for (std::uint32_t s = 0; s < first.cells.w; ++s) {
+            firstBone[m * IMPOSTOR_SETS + s] = static_cast<std::uint32_t>(bones.size());
+            const std::uint32_t carried = first.propSets[s];  // the set's props: the rest collapse (docs/props.md)
+            for (std::uint32_t clip = 0; clip < first.cells.y; ++clip) {
+                for (std::uint32_t frame = 0; frame < first.cells.z; ++frame) {
+                    // Frame k at phase k / frames of the clip, as a character at that phase samples it.
+                    locals = skeleton.restPose;
+                    if (clip < model.clips.size()) {
+                        const float time = model.clips[clip].duration * static_cast<float>(frame) / static_cast<float>(first.cells.z);
+                        anim::sampleClip(model.clips[clip], time, skeleton.restPose, locals);
+                    }
+                    anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, modelSpace);
+                    anim::skinningMatrices(modelSpace, skeleton.inverseBind, glm::mat4(1.0f), pose);
+                    for (std::size_t j = 0; j < skeleton.propOfJoint.size(); ++j)
+                        if (!anim::jointCarried(skeleton.propOfJoint[j], carried))
+                            pose[j] = anim::collapsedBone(glm::vec3(modelSpace[j][3]));
+                    bones.insert(bones.end(), pose.begin(), pose.end());
                 }
-                anim::localToModel(skeleton.parents, locals, skeleton.rootTransform, modelSpace);
-                anim::skinningMatrices(modelSpace, skeleton.inverseBind, glm::mat4(1.0f), pose);
-                // The props most of a crowd carries (model::propsMostCarry): one picture per pose (docs/props.md).
-                for (std::size_t j = 0; j < skeleton.propOfJoint.size(); ++j)
-                    if (!anim::jointCarried(skeleton.propOfJoint[j], carried))
-                        pose[j] = anim::collapsedBone(glm::vec3(modelSpace[j][3]));
-                bones.insert(bones.end(), pose.begin(), pose.end());
             }
         }
     }
     return bones;
 }
 
+void frameImpostorSets(std::span<const model::SkinnedModel* const> models, ImpostorPlan& plan) {
+    for (std::uint32_t m = 0; m < plan.modelCount(); ++m) {
+        const std::uint32_t inSphere = model::propsMostCarry(*models[m]);
+        for (std::uint32_t s = 0; s < plan.setCount(m); ++s) {
+            gpu::ImpostorModel& entry = plan.models[m * IMPOSTOR_SETS + s];
+            // Props the pose sphere holds (or none) fit its square; only the others can reach past it.
+            if ((entry.propSets[s] & ~inSphere) == 0u) continue;
+            const float radius = crowd::poseRadiusAbout(*models[m], glm::vec3(entry.square), entry.propSets[s]);
+            entry.square.w = std::max(entry.square.w, radius);
+        }
+    }
+}
+
 ImpostorAtlas::ImpostorAtlas(const gpu::VulkanContext& context, const GeometryPool& pool,
-                             std::span<const model::SkinnedModel* const> models, VkDescriptorSetLayout sceneSetLayout,
+                             std::span<const model::SkinnedModel* const> models,
+                             std::span<const std::vector<std::uint32_t>> propSets, VkDescriptorSetLayout sceneSetLayout,
                              VkDescriptorSet sceneSet, const ImpostorSettings& settings)
-    : context_(context), plan_(planImpostors(models, pool.models(), settings)) {
+    : context_(context), plan_(planImpostors(models, pool.models(), propSets, settings)) {
     const auto start = std::chrono::steady_clock::now();
+    frameImpostorSets(models, plan_);
     if (plan_.layers > context.properties.limits.maxImageArrayLayers)
         throw gpu::Error("impostors: the atlas needs " + std::to_string(plan_.layers) + " layers, over this device's " +
                          std::to_string(context.properties.limits.maxImageArrayLayers));
@@ -338,8 +371,10 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 2, bound, 0, nullptr);
                 vkCmdBindVertexBuffers(cmd, 0, 1, &bindVertices, &zero);
                 vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
-                for (std::uint32_t m = 0; m < plan_.models.size(); ++m) {
-                    const gpu::ImpostorModel& im = plan_.models[m];
+                for (std::uint32_t entry = 0; entry < plan_.models.size(); ++entry) {
+                    const std::uint32_t m = entry / IMPOSTOR_SETS;
+                    if (entry % IMPOSTOR_SETS >= plan_.setCount(m)) continue;  // a repeat of set 0
+                    const gpu::ImpostorModel& im = plan_.models[entry];
                     const gpu::ModelRecord& record = records[m];
                     const std::uint32_t cells = im.cells.y * im.cells.z * im.views.x * im.views.y;
                     const std::uint32_t first = std::max(im.cells.x, l * perLayer);
@@ -355,7 +390,7 @@ void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::Skinne
                         impostorBasis(towards, right, up);
                         const CapturePush push{im.square, glm::vec4(right, 0.0f), glm::vec4(up, 0.0f),
                                                glm::vec4(towards, 0.0f),
-                                               glm::uvec4(firstBone[m] + pose * record.info.y, m, 0u, 0u)};
+                                               glm::uvec4(firstBone[entry] + pose * record.info.y, m, 0u, 0u)};
                         const std::uint32_t inLayer = cell - l * perLayer;
                         const VkViewport viewport{static_cast<float>(inLayer % plan_.cellsPerRow * plan_.cellSize),
                                                   static_cast<float>(inLayer / plan_.cellsPerRow * plan_.cellSize),
