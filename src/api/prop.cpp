@@ -31,7 +31,7 @@ Prop Prop::rifle() { return detail::translated([] { return makeProp(model::makeR
 Prop Prop::flag() { return detail::translated([] { return makeProp(model::makeFlag()); }); }
 const std::string& Prop::name() const { return data_->mesh.name; }
 std::uint32_t Prop::vertexCount() const { return static_cast<std::uint32_t>(data_->mesh.vertices.size()); }
-std::uint32_t Prop::triangleCount() const { return static_cast<std::uint32_t>(data_->mesh.indices.size() / 3); }
+std::uint32_t Prop::triangleCount() const { return static_cast<std::uint32_t>(data_->mesh.triangleCount()); }
 
 Model Model::withProps(const std::vector<PropAttachment>& props) const {
     return detail::translated([&] {
