@@ -2,7 +2,10 @@
 // offset times its own vertices, by every skinning method; its pixels appear where the CPU projection of
 // those vertices puts them and vanish when a character does not carry it; a missing joint is one error.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -49,6 +52,60 @@ glm::dvec3 applyAffine(const anim::Affine& a, const glm::dvec3& p) {
     return {glm::dot(glm::dvec4(a.row0), q), glm::dot(glm::dvec4(a.row1), q), glm::dot(glm::dvec4(a.row2), q)};
 }
 
+// Culling off, and level-of-detail thresholds that put every character at `level`: none reaches them
+// (level 2), every one passes the second but not the first (level 1), or no LOD (level 0).
+render::CullSettings atLevel(std::uint32_t level) {
+    render::CullSettings cull;
+    cull.mode = render::CullMode::Off;
+    cull.lod = level > 0;
+    cull.lodThresholds[0] = 1e6f;
+    cull.lodThresholds[1] = level == 1 ? 1e-3f : 1e5f;
+    return cull;
+}
+
+// A triangle as its three corners in the prop's own space, rounded to 0.1 mm, rotated to start at its
+// smallest corner (so the same triangle compares equal whichever corner a list starts at).
+using LocalTriangle = std::array<std::array<long, 3>, 3>;
+LocalTriangle localTriangle(std::array<glm::dvec3, 3> corners) {
+    LocalTriangle t;
+    for (std::size_t k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) t[k][static_cast<std::size_t>(i)] = std::lround(corners[k][i] * 1e4);
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    return t;
+}
+
+// The triangles of `m`'s level `level` on joint `propJoint`, in the prop's own space (through the
+// joint's inverse bind matrix, which is (jointBind * offset)^-1).
+std::multiset<LocalTriangle> propTrianglesAtLevel(const model::SkinnedModel& m, std::uint32_t propJoint, std::size_t level) {
+    const glm::dmat4 toLocal(m.skeleton.inverseBind[propJoint]);
+    std::multiset<LocalTriangle> out;
+    const std::vector<std::uint32_t>& indices = m.lods[level].indices;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        if (m.vertices[indices[t]].joints.x != propJoint) continue;
+        std::array<glm::dvec3, 3> corners;
+        for (std::size_t k = 0; k < 3; ++k)
+            corners[k] = glm::dvec3(toLocal * glm::dvec4(glm::dvec3(glm::vec3(m.vertices[indices[t + k]].position)), 1.0));
+        out.insert(localTriangle(corners));
+    }
+    return out;
+}
+
+// The prop mesh's own triangles at `level`, in its space.
+std::multiset<LocalTriangle> meshTrianglesAtLevel(const model::PropMesh& prop, std::size_t level) {
+    std::multiset<LocalTriangle> out;
+    const std::vector<std::uint32_t>& indices = prop.levels[level];
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        std::array<glm::dvec3, 3> corners;
+        for (std::size_t k = 0; k < 3; ++k) corners[k] = glm::dvec3(glm::vec3(prop.vertices[indices[t + k]].position));
+        out.insert(localTriangle(corners));
+    }
+    return out;
+}
+
+std::size_t distinctVertices(const std::vector<std::uint32_t>& indices) {
+    return std::set<std::uint32_t>(indices.begin(), indices.end()).size();
+}
+
 std::vector<crowd::Character> fourCharacters(const model::SkinnedModel& m) {
     std::vector<crowd::Character> characters(4);
     for (std::uint32_t i = 0; i < 4; ++i) {
@@ -70,34 +127,47 @@ TEST_F(GpuTest, PropVerticesAreJointWorldTimesOffsetTimesLocalForEveryMethodThat
     // test's offset (not through the prop joint the library made).
     const glm::dmat4 toLocal = glm::inverse(glm::dmat4(glm::inverse(m.skeleton.inverseBind[s.head])) * glm::dmat4(testOffset()));
     const glm::dmat4 offset(testOffset());
-    std::size_t checked = 0;
-    for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Static}) {
-        crowd::Crowd crowd(m, fourCharacters(m));
-        test::RendererOptions options;
-        options.size = {64, 64};
-        options.method = method;
-        options.cull.mode = render::CullMode::Off;
-        options.cull.lod = false;
-        test::TestRenderer renderer(*context, crowd, options);
-        const float time = 0.9f;
-        renderer.renderFrame(time);
-        renderer.finish();
-        double worst = 0.0;
-        for (std::uint32_t c = 0; c < crowd.size(); ++c) {
-            const test::ReadbackVertices gpu = test::readSkinnedCharacter(*context, renderer, c);
-            const anim::Affine head = crowd.jointWorld(c, s.head, time);
-            for (std::size_t v = 0; v < m.vertices.size(); ++v) {
-                if (m.vertices[v].joints.x != s.propJoint) continue;
-                const glm::dvec3 local(toLocal * glm::dvec4(glm::dvec3(glm::vec3(m.vertices[v].position)), 1.0));
-                const glm::dvec3 expected = applyAffine(head, glm::dvec3(offset * glm::dvec4(local, 1.0)));
-                worst = std::max(worst, glm::length(glm::dvec3(gpu.positions[v]) - expected));
-                ++checked;
+    std::size_t checked = 0, expectedChecks = 0;
+    for (std::uint32_t level = 0; level < model::kLodLevels; ++level) {
+        // The vertices the prop's triangles use at this level (its own levels, docs/props.md).
+        std::set<std::uint32_t> propVertices;
+        for (std::uint32_t index : m.lods[level].indices)
+            if (m.vertices[index].joints.x == s.propJoint) propVertices.insert(index);
+        ASSERT_FALSE(propVertices.empty()) << "level " << level;
+        for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Static}) {
+            if (method == skin::Method::Static && level > 0) continue;  // static skins the full mesh only
+            crowd::Crowd crowd(m, fourCharacters(m));
+            test::RendererOptions options;
+            options.size = {64, 64};
+            options.method = method;
+            options.cull = atLevel(level);
+            test::TestRenderer renderer(*context, crowd, options);
+            const float time = 0.9f;
+            renderer.renderFrame(time);
+            renderer.finish();
+            double worst = 0.0;
+            const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(*context, renderer);
+            ASSERT_EQ(drawn.size(), crowd.size());
+            for (const auto& [c, where] : drawn) {
+                ASSERT_EQ(where.lod, level) << "character " << c;
+                const test::ReadbackVertices gpu =
+                    test::readSkinnedVertices(*context, renderer.method().skinnedVertices(), where.firstVertex, where.vertexCount);
+                const anim::Affine head = crowd.jointWorld(c, s.head, time);
+                for (std::uint32_t v : propVertices) {
+                    ASSERT_LT(v, where.vertexCount) << "level " << level;
+                    const glm::dvec3 local(toLocal * glm::dvec4(glm::dvec3(glm::vec3(m.vertices[v].position)), 1.0));
+                    const glm::dvec3 expected = applyAffine(head, glm::dvec3(offset * glm::dvec4(local, 1.0)));
+                    worst = std::max(worst, glm::length(glm::dvec3(gpu.positions[v]) - expected));
+                    ++checked;
+                }
+                expectedChecks += propVertices.size();
             }
+            // float32 skinning a few metres from the origin: 1e-5 of the height, as the skinning tests allow.
+            EXPECT_LE(worst, 1e-5 * m.height()) << skin::methodName(method) << " level " << level;
         }
-        // float32 skinning a few metres from the origin: 1e-5 of the height, as the skinning tests allow.
-        EXPECT_LE(worst, 1e-5 * m.height()) << skin::methodName(method);
     }
-    EXPECT_EQ(checked, 4u * 4u * model::makeFlag().vertices.size());
+    EXPECT_EQ(checked, expectedChecks);
+    EXPECT_GE(checked, 4u * 4u * model::makeFlag().vertices.size());  // level 0 alone: every flag vertex
 }
 
 TEST(Props, CpuPalettesPlaceThePropAtJointTimesOffsetAndCollapseItWhenNotCarried) {
@@ -124,6 +194,69 @@ TEST(Props, CpuPalettesPlaceThePropAtJointTimesOffsetAndCollapseItWhenNotCarried
             }
         }
     }
+}
+
+TEST(Props, EachLevelDrawsTheBodysOwnLevelAndEachPropsOwnLevel) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    model::SkinnedModel body = model::makeSoldier(1, false);
+    model::buildLods(body);
+    const model::PropMesh rifle = model::makeRifle(), flag = model::makeFlag();
+    ASSERT_EQ(soldier.props.size(), 2u);
+    for (std::size_t l = 0; l < model::kLodLevels; ++l) {
+        // The body's level is the soldier's without props; the props add exactly their own level.
+        EXPECT_EQ(soldier.lods[l].indices.size() / 3, body.lods[l].indices.size() / 3 + rifle.triangleCount(l) + flag.triangleCount(l))
+            << "level " << l;
+        if (l > 0) {
+            EXPECT_EQ(soldier.lods[l].vertexCount, body.lods[l].vertexCount + distinctVertices(rifle.levels[l]) +
+                                                       distinctVertices(flag.levels[l]))
+                << "level " << l;
+        }
+        // Each prop's triangles at that level are its own level's, where its joint and offset put them.
+        EXPECT_EQ(propTrianglesAtLevel(soldier, soldier.props[0].joint, l), meshTrianglesAtLevel(rifle, l)) << "rifle, level " << l;
+        EXPECT_EQ(propTrianglesAtLevel(soldier, soldier.props[1].joint, l), meshTrianglesAtLevel(flag, l)) << "flag, level " << l;
+    }
+    // The rifle's and flag's coarser levels reuse level 0's vertices: level 0 skins no more than before.
+    EXPECT_EQ(soldier.lods[0].vertexCount, body.lods[0].vertexCount + rifle.vertices.size() + flag.vertices.size());
+    // Level 2 (docs/props.md#cost): 314 triangles and 320 vertices, against 318 and 417 when the props
+    // were simplified with the body (their flat-shaded boxes kept nearly every corner).
+    EXPECT_EQ(soldier.lods[2].indices.size() / 3, 314u);
+    EXPECT_EQ(soldier.lods[2].vertexCount, 320u);
+}
+
+TEST(Props, APropWithAnEmptyLevelIsNotDrawnThereAndLevelsMustNest) {
+    model::SkinnedModel body = model::makeSoldier(1, false);
+    model::buildLods(body);
+    model::PropMesh rifle = model::makeRifle();
+    rifle.levels[2].clear();
+    model::SkinnedModel carrying = model::makeSoldier(1, false);
+    model::attachProp(carrying, rifle, "hand_r", testOffset());
+    model::buildLods(carrying);
+    const std::uint32_t joint = carrying.props[0].joint;
+    EXPECT_TRUE(propTrianglesAtLevel(carrying, joint, 2).empty());
+    EXPECT_EQ(carrying.lods[2].vertexCount, body.lods[2].vertexCount);  // not even skinned at level 2
+    EXPECT_EQ(propTrianglesAtLevel(carrying, joint, 1), meshTrianglesAtLevel(rifle, 1));
+    // Attached again over a model whose levels are built (what Model::withProps does): the same levels.
+    model::attachProp(carrying, model::makeFlag(), "head", testOffset());
+    model::buildLods(carrying);
+    EXPECT_TRUE(propTrianglesAtLevel(carrying, joint, 2).empty());
+    EXPECT_EQ(propTrianglesAtLevel(carrying, joint, 1), meshTrianglesAtLevel(rifle, 1));
+    EXPECT_EQ(propTrianglesAtLevel(carrying, carrying.props[1].joint, 2), meshTrianglesAtLevel(model::makeFlag(), 2));
+
+    // A coarser level on a vertex the level above does not use would break the vertex prefixes.
+    model::PropMesh loose = model::makeRifle();
+    loose.levels[1] = {loose.levels[0][0], loose.levels[0][1], loose.levels[0][2]};
+    model::SkinnedModel other = model::makeSoldier(1, false);
+    try {
+        model::attachProp(other, loose, "hand_r", glm::mat4(1.0f));
+        FAIL() << "a level-2 triangle over vertices level 1 does not use was accepted";
+    } catch (const gpu::Error& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("level 2 uses a vertex level 1 does not"), std::string::npos) << message;
+        EXPECT_NE(message.find("'rifle'"), std::string::npos) << message;
+    }
+    model::PropMesh empty = model::makeFlag();
+    empty.levels[0].clear();
+    EXPECT_THROW(model::attachProp(other, empty, "hand_l", glm::mat4(1.0f)), gpu::Error);
 }
 
 TEST(Props, AMissingJointIsOneErrorNamingTheModelAndTheJoint) {
