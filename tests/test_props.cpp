@@ -4,8 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -21,6 +25,8 @@
 #include "model/lod_builder.h"
 #include "model/procedural_models.h"
 #include "skin/cpu_skinning.h"
+#include "model/gltf_prop.h"
+#include "support/gltf_builder.h"
 #include "support/gpu_test.h"
 
 namespace {
@@ -120,43 +126,50 @@ std::vector<crowd::Character> fourCharacters(const model::SkinnedModel& m) {
 
 }  // namespace
 
-TEST_F(GpuTest, PropVerticesAreJointWorldTimesOffsetTimesLocalForEveryMethodThatStoresVertices) {
-    const SoldierWithTestProp s;
-    const model::SkinnedModel& m = s.model;
-    // The prop's own vertices, recovered from the bind pose through the head's bind transform and the
-    // test's offset (not through the prop joint the library made).
-    const glm::dmat4 toLocal = glm::inverse(glm::dmat4(glm::inverse(m.skeleton.inverseBind[s.head])) * glm::dmat4(testOffset()));
-    const glm::dmat4 offset(testOffset());
+namespace {
+
+// Renders four characters of `m` at every level with each method and checks that the GPU's skinned
+// vertices of the prop's triangles at that level equal jointWorld(parent) * offset * local, `local`
+// recovered from the bind pose through the parent's bind transform and `offset` (not through the prop
+// joint the library made). Returns the number of vertices checked.
+std::size_t expectPropAtJointTimesOffsetAtEveryLevel(const gpu::VulkanContext& context, const model::SkinnedModel& m,
+                                                     std::uint32_t propJoint, std::uint32_t parent, const glm::mat4& offsetMatrix,
+                                                     const std::vector<skin::Method>& methods) {
+    const glm::dmat4 toLocal = glm::inverse(glm::dmat4(glm::inverse(m.skeleton.inverseBind[parent])) * glm::dmat4(offsetMatrix));
+    const glm::dmat4 offset(offsetMatrix);
     std::size_t checked = 0, expectedChecks = 0;
     for (std::uint32_t level = 0; level < model::kLodLevels; ++level) {
         // The vertices the prop's triangles use at this level (its own levels, docs/props.md).
         std::set<std::uint32_t> propVertices;
         for (std::uint32_t index : m.lods[level].indices)
-            if (m.vertices[index].joints.x == s.propJoint) propVertices.insert(index);
-        ASSERT_FALSE(propVertices.empty()) << "level " << level;
-        for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Static}) {
+            if (m.vertices[index].joints.x == propJoint) propVertices.insert(index);
+        EXPECT_FALSE(propVertices.empty()) << "level " << level;
+        for (skin::Method method : methods) {
             if (method == skin::Method::Static && level > 0) continue;  // static skins the full mesh only
             crowd::Crowd crowd(m, fourCharacters(m));
             test::RendererOptions options;
             options.size = {64, 64};
             options.method = method;
             options.cull = atLevel(level);
-            test::TestRenderer renderer(*context, crowd, options);
+            test::TestRenderer renderer(context, crowd, options);
             const float time = 0.9f;
             renderer.renderFrame(time);
             renderer.finish();
             double worst = 0.0;
-            const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(*context, renderer);
-            ASSERT_EQ(drawn.size(), crowd.size());
+            const std::map<std::uint32_t, test::DrawnCharacter> drawn = test::readDrawList(context, renderer);
+            EXPECT_EQ(drawn.size(), crowd.size());
             for (const auto& [c, where] : drawn) {
-                ASSERT_EQ(where.lod, level) << "character " << c;
+                EXPECT_EQ(where.lod, level) << "character " << c;
                 const test::ReadbackVertices gpu =
-                    test::readSkinnedVertices(*context, renderer.method().skinnedVertices(), where.firstVertex, where.vertexCount);
-                const anim::Affine head = crowd.jointWorld(c, s.head, time);
+                    test::readSkinnedVertices(context, renderer.method().skinnedVertices(), where.firstVertex, where.vertexCount);
+                const anim::Affine joint = crowd.jointWorld(c, parent, time);
                 for (std::uint32_t v : propVertices) {
-                    ASSERT_LT(v, where.vertexCount) << "level " << level;
+                    if (v >= where.vertexCount) {
+                        ADD_FAILURE() << "level " << level << " draws vertex " << v << " beyond its " << where.vertexCount;
+                        continue;
+                    }
                     const glm::dvec3 local(toLocal * glm::dvec4(glm::dvec3(glm::vec3(m.vertices[v].position)), 1.0));
-                    const glm::dvec3 expected = applyAffine(head, glm::dvec3(offset * glm::dvec4(local, 1.0)));
+                    const glm::dvec3 expected = applyAffine(joint, glm::dvec3(offset * glm::dvec4(local, 1.0)));
                     worst = std::max(worst, glm::length(glm::dvec3(gpu.positions[v]) - expected));
                     ++checked;
                 }
@@ -167,6 +180,16 @@ TEST_F(GpuTest, PropVerticesAreJointWorldTimesOffsetTimesLocalForEveryMethodThat
         }
     }
     EXPECT_EQ(checked, expectedChecks);
+    return checked;
+}
+
+}  // namespace
+
+TEST_F(GpuTest, PropVerticesAreJointWorldTimesOffsetTimesLocalForEveryMethodThatStoresVertices) {
+    const SoldierWithTestProp s;
+    const std::size_t checked = expectPropAtJointTimesOffsetAtEveryLevel(
+        *context, s.model, s.propJoint, s.head, testOffset(),
+        {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect, skin::Method::Static});
     EXPECT_GE(checked, 4u * 4u * model::makeFlag().vertices.size());  // level 0 alone: every flag vertex
 }
 
@@ -411,4 +434,142 @@ TEST_F(GpuTest, APropsPixelsAppearWhereItsCpuProjectionFallsAndVanishWhenNotCarr
         EXPECT_GE(static_cast<double>(inside), 0.98 * static_cast<double>(differing)) << skin::methodName(method);
         EXPECT_GE(static_cast<double>(differing), 0.4 * static_cast<double>(covered)) << skin::methodName(method);
     }
+}
+
+// ---- Props from glTF files ------------------------------------------------------------------------
+
+namespace {
+
+// A box 0.1 x 0.2 x 0.4 m centred off its origin at (0, 0.1, 0.05), flat-shaded (24 vertices), in two
+// primitives: its four long sides in red (material 0) and its two ends in blue (material 1). No skin,
+// no node: a static mesh.
+struct GltfBox {
+    static constexpr glm::vec3 center{0.0f, 0.1f, 0.05f}, half{0.05f, 0.1f, 0.2f};
+    std::vector<glm::vec3> corners;  // every vertex, as written
+    test::GltfBuilder b;
+    GltfBox() {
+        nlohmann::json primitives = nlohmann::json::array();
+        for (int part = 0; part < 2; ++part) {
+            std::vector<float> positions, normals;
+            std::vector<std::uint16_t> indices;
+            for (int axis : part == 0 ? std::vector<int>{0, 1} : std::vector<int>{2}) {
+                for (float sign : {1.0f, -1.0f}) {
+                    glm::vec3 n(0.0f);
+                    n[axis] = sign;
+                    const glm::vec3 u = glm::vec3(n.y != 0.0f || n.z != 0.0f ? 1.0f : 0.0f, n.x != 0.0f ? 1.0f : 0.0f, 0.0f);
+                    const glm::vec3 w = glm::cross(n, u);  // (u, w, n) right-handed: corners counter-clockwise from n
+                    const auto first = static_cast<std::uint16_t>(positions.size() / 3);
+                    for (glm::vec2 ab : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+                        const glm::vec3 p = center + half * (n + ab.x * u + ab.y * w);
+                        corners.push_back(p);
+                        positions.insert(positions.end(), {p.x, p.y, p.z});
+                        normals.insert(normals.end(), {n.x, n.y, n.z});
+                    }
+                    for (std::uint16_t i : {0, 1, 2, 0, 2, 3}) indices.push_back(static_cast<std::uint16_t>(first + i));
+                }
+            }
+            primitives.push_back({{"attributes", {{"POSITION", b.floats(positions, "VEC3")}, {"NORMAL", b.floats(normals, "VEC3")}}},
+                                  {"indices", b.shorts(indices, "SCALAR")},
+                                  {"material", part}});
+        }
+        b.doc["meshes"] = {{{"primitives", primitives}}};
+        b.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.1, 1.0}}}}},
+                              {{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.8, 1.0}}}}}};
+    }
+};
+
+std::vector<std::uint8_t> textBytes(const std::string& text) { return {text.begin(), text.end()}; }
+
+// A folder of this process's own under the temporary directory (test binaries may run side by side).
+std::filesystem::path scratchFolder() {
+    return std::filesystem::temp_directory_path() / ("crowd-gltf-props-" + std::to_string(::getpid()));
+}
+
+// A file in that folder.
+std::filesystem::path writeFile(const std::string& name, const std::vector<std::uint8_t>& bytes) {
+    const std::filesystem::path folder = scratchFolder();
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path path = folder / name;
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    return path;
+}
+
+}  // namespace
+
+TEST(Props, AGltfMeshIsARigidPropWithItsPositionsNormalsColoursAndLevels) {
+    GltfBox box;
+    const std::filesystem::path path = writeFile("box.glb", box.b.glb());
+    const model::PropMesh prop = model::loadGltfProp(path);
+    EXPECT_EQ(prop.name, "box");
+    ASSERT_EQ(prop.vertices.size(), 24u);
+    EXPECT_EQ(prop.triangleCount(0), 12u);  // both primitives
+    ASSERT_EQ(prop.materialColors.size(), 2u);
+    EXPECT_EQ(prop.materialColors[0], glm::vec4(0.8f, 0.2f, 0.1f, 1.0f));
+    EXPECT_EQ(prop.materialColors[1], glm::vec4(0.1f, 0.2f, 0.8f, 1.0f));
+    std::multiset<std::array<float, 3>> written, read;
+    for (const glm::vec3& p : box.corners) written.insert({p.x, p.y, p.z});
+    for (const gpu::SkinVertex& v : prop.vertices) {
+        read.insert({v.position.x, v.position.y, v.position.z});
+        // The ends (normal along z) are the second primitive's: blue; the sides red.
+        EXPECT_EQ(v.normal.w, std::abs(v.normal.z) == 1.0f ? 1.0f : 0.0f);
+        EXPECT_EQ(v.joints.x, 0u);
+        EXPECT_EQ(v.weights.x, 1.0f);
+    }
+    EXPECT_EQ(read, written);  // every vertex where the file put it, in the mesh's own space
+    // Levels made as a model's, by meshoptimizer (within its budgets: 6 and 3 triangles of 12, when it
+    // can), never empty, nested.
+    for (std::size_t l = 1; l < model::kLodLevels; ++l) {
+        EXPECT_GT(prop.triangleCount(l), 0u) << "level " << l;
+        EXPECT_LE(prop.triangleCount(l), prop.triangleCount(l - 1)) << "level " << l;
+    }
+    EXPECT_LT(prop.triangleCount(2), 12u);
+    EXPECT_NO_THROW(model::checkPropMesh(prop, "box"));
+
+    // The public API: the same prop, attached as any.
+    const crowdgpu::Prop gltfBox = crowdgpu::Prop::fromGltf(path.string());
+    EXPECT_EQ(gltfBox.name(), "box");
+    EXPECT_EQ(gltfBox.triangleCount(), 12u);
+    EXPECT_EQ(gltfBox.lodTriangles(2), prop.triangleCount(2));
+    const crowdgpu::Model soldier = crowdgpu::Model::soldier();
+    const crowdgpu::Model carrying = soldier.withProps({{gltfBox, "hand_r"}});
+    EXPECT_EQ(carrying.triangleCount(), soldier.triangleCount() + 12u);
+    EXPECT_EQ(carrying.jointName(carrying.propJoint(carrying.propCount() - 1)), "box");
+}
+
+TEST_F(GpuTest, AGltfPropOnTheHandSkinsToJointWorldTimesOffsetTimesLocalAtEveryLevel) {
+    GltfBox box;
+    const model::PropMesh prop = model::loadGltfProp(writeFile("box.gltf", textBytes(box.b.gltf())));
+    model::SkinnedModel m = model::makeSoldier(1);
+    model::attachProp(m, prop, "hand_l", testOffset());
+    const std::uint32_t propJoint = m.props.back().joint, hand = m.props.back().attachedTo;
+    model::buildLods(m);
+    m.poseSphere = crowd::computePoseSphere(m);
+    const std::size_t checked = expectPropAtJointTimesOffsetAtEveryLevel(*context, m, propJoint, hand, testOffset(),
+                                                                        {skin::Method::Compute, skin::Method::TwoPass});
+    EXPECT_GE(checked, 2u * 4u * 24u);  // level 0 alone: two methods, four characters, the box's 24 vertices
+}
+
+TEST(Props, ABadGltfPropIsOneLineNamingTheFileAndTheProblem) {
+    auto expectRefused = [](const std::filesystem::path& path, const std::string& problem) {
+        try {
+            crowdgpu::Prop::fromGltf(path.string());
+            ADD_FAILURE() << path << " was accepted";
+        } catch (const crowdgpu::Error& error) {
+            EXPECT_EQ(error.code(), crowdgpu::ErrorCode::LoadFailed);
+            const std::string message = error.what();
+            EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+            EXPECT_NE(message.find(problem), std::string::npos) << message;
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        }
+    };
+    expectRefused(scratchFolder() / "absent.glb", "no such file");
+    GltfBox box;
+    box.b.doc["meshes"][0]["primitives"][1]["indices"] = 99;  // an accessor the file does not have
+    expectRefused(writeFile("bad-index.gltf", textBytes(box.b.gltf())),
+                  "accessor");
+    GltfBox noMesh;
+    noMesh.b.doc.erase("meshes");
+    expectRefused(writeFile("no-mesh.gltf", textBytes(noMesh.b.gltf())),
+                  "no mesh");
+    expectRefused(writeFile("garbage.glb", {'g', 'l', 'T', 'F', 2, 0, 0, 0}), "garbage.glb");
 }
