@@ -104,16 +104,19 @@ PropMesh makeRifle() {
     PropBuilder rifle("rifle", {{0.025f, 0.025f, 0.03f, 1.0f}, {0.18f, 0.08f, 0.03f, 1.0f}});
     // Along +z from butt to muzzle, 0.95 m; the hand closes at the origin, under the receiver's front.
     const std::size_t stock = rifle.box({0.0f, 0.04f, -0.38f}, {0.02f, 0.045f, 0.12f}, Wood);
-    const std::size_t receiver = rifle.box({0.0f, 0.05f, -0.12f}, {0.025f, 0.035f, 0.15f}, Metal);
+    rifle.box({0.0f, 0.05f, -0.12f}, {0.025f, 0.035f, 0.15f}, Metal);  // receiver
     const std::size_t magazine = rifle.box({0.0f, -0.03f, -0.07f}, {0.015f, 0.05f, 0.03f}, Metal);
-    rifle.box({0.0f, 0.05f, 0.13f}, {0.022f, 0.028f, 0.11f}, Wood);  // handguard
+    const std::size_t handguard = rifle.box({0.0f, 0.05f, 0.13f}, {0.022f, 0.028f, 0.11f}, Wood);
     const std::size_t barrel = rifle.box({0.0f, 0.05f, 0.34f}, {0.011f, 0.011f, 0.11f}, Metal);
-    // Level 1 (32 triangles): the stock, the magazine, and one tapered tube from the receiver's back to
-    // the muzzle in the receiver's metal. Level 2 (8): one tapered tube from the butt to the muzzle, a
-    // stick 0.95 m long that is thicker at the butt, wood then metal along its sides.
-    return rifle.finish({rifle.scratch.indices,
-                         joined({rifle.wholeBox(stock), rifle.wholeBox(magazine), rifle.loftAlongZ(receiver, barrel)}),
-                         rifle.loftAlongZ(stock, barrel)});
+    // A triangle shows one material (the stock and handguard are wood, the barrel metal), so the tube is
+    // lofted between the two wooden parts. Level 1 (32 triangles): one tapered wooden tube from the butt
+    // to the handguard's front, the magazine and the barrel. Level 2 (16): that tube and the barrel's
+    // four sides (no caps), so the rifle still reaches from butt to muzzle.
+    const Triangles wood = rifle.loftAlongZ(stock, handguard);
+    const Triangles barrelSides = joined({rifle.face(barrel, {1, 0, 0}), rifle.face(barrel, {-1, 0, 0}),
+                                          rifle.face(barrel, {0, 1, 0}), rifle.face(barrel, {0, -1, 0})});
+    return rifle.finish({rifle.scratch.indices, joined({wood, rifle.wholeBox(magazine), rifle.wholeBox(barrel)}),
+                         joined({wood, barrelSides})});
 }
 
 PropMesh makeFlag() {
