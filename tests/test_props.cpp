@@ -573,3 +573,23 @@ TEST(Props, ABadGltfPropIsOneLineNamingTheFileAndTheProblem) {
                   "no mesh");
     expectRefused(writeFile("garbage.glb", {'g', 'l', 'T', 'F', 2, 0, 0, 0}), "garbage.glb");
 }
+
+TEST(Props, TheCApiAttachesAGltfPropAndRefusesABadFileInOneLine) {
+    GltfBox box;
+    const std::filesystem::path path = writeFile("c-box.glb", box.b.glb());
+    crowdgpu_model soldier = nullptr, carrying = nullptr;
+    ASSERT_EQ(crowdgpu_model_soldier(1, &soldier), CROWDGPU_OK);
+    ASSERT_EQ(crowdgpu_model_with_gltf_prop(soldier, path.string().c_str(), nullptr, "hand_r", nullptr, 1.0f, &carrying),
+              CROWDGPU_OK);
+    EXPECT_EQ(crowdgpu_model_find_joint(carrying, "c-box"), crowdgpu_model_find_joint(soldier, "flag") + 1);
+    crowdgpu_model_destroy(carrying);
+    carrying = nullptr;
+    const std::string absent = (scratchFolder() / "absent.gltf").string();
+    EXPECT_EQ(crowdgpu_model_with_gltf_prop(soldier, absent.c_str(), nullptr, "hand_r", nullptr, 1.0f, &carrying),
+              CROWDGPU_ERROR_LOAD_FAILED);
+    EXPECT_EQ(carrying, nullptr);
+    const std::string message = crowdgpu_last_error();
+    EXPECT_NE(message.find(absent + ": no such file"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    crowdgpu_model_destroy(soldier);
+}
