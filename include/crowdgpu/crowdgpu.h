@@ -62,6 +62,13 @@ int32_t crowdgpu_model_find_joint(crowdgpu_model model, const char* name);
  * CROWDGPU_ERROR_INVALID_ARGUMENT naming the model and the joint when the model has no such joint. */
 crowdgpu_result crowdgpu_model_with_prop(crowdgpu_model model, const char* prop, const char* joint,
                                          const float offset[12], float share, crowdgpu_model* out);
+/* The same with the first mesh of a glTF 2.0 file (.gltf or .glb) as the prop (crowdgpu::Prop::fromGltf:
+ * rigid, base-colour factors, its own levels of detail). asset_root: the folder external buffers must lie
+ * in (NULL: the file's own). A file that cannot be used fails with CROWDGPU_ERROR_LOAD_FAILED and one line
+ * naming the file and the problem in crowdgpu_last_error(). */
+crowdgpu_result crowdgpu_model_with_gltf_prop(crowdgpu_model model, const char* path, const char* asset_root,
+                                              const char* joint, const float offset[12], float share,
+                                              crowdgpu_model* out);
 /* A clip's animation events, in time order (crowdgpu::Model::eventCount, eventName, eventTime,
  * eventJoint): a "footstep" per foot touchdown on the built-in models' walking clips, a glTF
  * animation's from its extras (docs/events.md). A model, clip or event that does not exist is

@@ -21,12 +21,20 @@ class Prop {
 public:
     // The built-in rifle (0.95 m along +z, muzzle forward, the grip at the origin) and flag (a 2 m pole
     // along +y from 0.4 m below the origin, where a hand holds it, its cloth at the top towards -z).
+    // Each has levels of detail of its own: the model's level l draws the prop's level l.
     static Prop rifle();
     static Prop flag();
+    // The first mesh (all its triangle primitives) of a glTF 2.0 file (.gltf or .glb) in its own space,
+    // rigid: positions, normals and each primitive's base-colour factor; no skin needed, node transforms,
+    // textures and animations not read. Named after the file's stem; its levels are made by
+    // meshoptimizer as a model's are. External buffers must lie inside `assetRoot` (empty: the file's
+    // folder). Throws Error(LoadFailed) with one line naming the file and the problem.
+    static Prop fromGltf(const std::string& path, const std::string& assetRoot = {});
 
     const std::string& name() const;
-    std::uint32_t vertexCount() const;
-    std::uint32_t triangleCount() const;
+    std::uint32_t vertexCount() const;    // of all its levels
+    std::uint32_t triangleCount() const;  // of level 0, the full prop
+    std::uint32_t lodTriangles(std::uint32_t lod) const;  // of a level (0..2); throws Error(InvalidArgument) past 2
 
     const std::shared_ptr<const detail::PropData>& data() const { return data_; }
     explicit Prop(std::shared_ptr<const detail::PropData> data);

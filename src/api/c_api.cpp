@@ -152,6 +152,19 @@ crowdgpu_result crowdgpu_model_with_prop(crowdgpu_model model, const char* prop,
     });
 }
 
+crowdgpu_result crowdgpu_model_with_gltf_prop(crowdgpu_model model, const char* path, const char* asset_root,
+                                              const char* joint, const float offset[12], float share,
+                                              crowdgpu_model* out) {
+    if (!model || !path || !joint || !out)
+        return invalid("crowdgpu_model_with_gltf_prop: model, path, joint or out is NULL");
+    return guarded([&] {
+        crowdgpu::PropAttachment attachment{crowdgpu::Prop::fromGltf(path, asset_root ? asset_root : ""), joint};
+        if (offset) std::memcpy(attachment.offset, offset, sizeof attachment.offset);
+        attachment.share = share;
+        *out = new crowdgpu_model_t{model->model.withProps({attachment})};
+    });
+}
+
 crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_t model_count, uint32_t count,
                                            uint32_t seed, crowdgpu_behaviour behaviour, crowdgpu_crowd* out) {
     if (!out || !models || model_count == 0) return invalid("crowdgpu_crowd_create_grid: no models or out is NULL");

@@ -7,6 +7,7 @@
 #include "crowd/pose_bounds.h"
 #include "crowdgpu/model.hpp"
 #include "model/attach_prop.h"
+#include "model/gltf_prop.h"
 #include "model/lod_builder.h"
 
 namespace crowdgpu {
@@ -29,9 +30,25 @@ glm::mat4 offsetMatrix(const float rows[12]) {
 Prop::Prop(std::shared_ptr<const detail::PropData> data) : data_(std::move(data)) {}
 Prop Prop::rifle() { return detail::translated([] { return makeProp(model::makeRifle()); }); }
 Prop Prop::flag() { return detail::translated([] { return makeProp(model::makeFlag()); }); }
+
+Prop Prop::fromGltf(const std::string& path, const std::string& assetRoot) {
+    return detail::translated([&] {
+        try {
+            return makeProp(model::loadGltfProp(path, nullptr, assetRoot));
+        } catch (const gpu::Error& error) {
+            throw Error(ErrorCode::LoadFailed, error.what());
+        }
+    });
+}
+
+std::uint32_t Prop::lodTriangles(std::uint32_t lod) const {
+    if (lod >= model::kLodLevels)
+        throw Error(ErrorCode::InvalidArgument, name() + ": no level of detail " + std::to_string(lod));
+    return static_cast<std::uint32_t>(data_->mesh.triangleCount(lod));
+}
 const std::string& Prop::name() const { return data_->mesh.name; }
 std::uint32_t Prop::vertexCount() const { return static_cast<std::uint32_t>(data_->mesh.vertices.size()); }
-std::uint32_t Prop::triangleCount() const { return static_cast<std::uint32_t>(data_->mesh.indices.size() / 3); }
+std::uint32_t Prop::triangleCount() const { return static_cast<std::uint32_t>(data_->mesh.triangleCount()); }
 
 Model Model::withProps(const std::vector<PropAttachment>& props) const {
     return detail::translated([&] {

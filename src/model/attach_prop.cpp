@@ -57,6 +57,7 @@ std::string uniqueJointName(const anim::Skeleton& skeleton, const std::string& n
 void attachProp(SkinnedModel& model, const PropMesh& prop, const std::string& joint, const glm::mat4& offset,
                 float share) {
     const std::string what = model.name + ": prop '" + prop.name + "' on joint '" + joint + "'";
+    checkPropMesh(prop, what);
     const std::int32_t parent = jointNamed(model.skeleton, joint);
     if (parent < 0) throw gpu::Error(model.name + " has no joint '" + joint + "' to carry prop '" + prop.name + "'");
     if (!(share >= 0.0f && share <= 1.0f)) throw gpu::Error(what + ": its share must be within [0, 1]");
@@ -77,7 +78,7 @@ void attachProp(SkinnedModel& model, const PropMesh& prop, const std::string& jo
     skeleton.restPose.push_back(rest);
     skeleton.inverseBind.push_back(glm::inverse(propBind));
     skeleton.propOfJoint.push_back(static_cast<std::uint32_t>(model.props.size()) + 1u);
-    model.props.push_back({prop.name, propJoint, static_cast<std::uint32_t>(parent), share});
+    model.props.push_back({prop.name, propJoint, static_cast<std::uint32_t>(parent), share, {}});
 
     std::vector<std::uint32_t> materials;
     for (const glm::vec4& colour : prop.materialColors) materials.push_back(materialFor(model, colour, what));
@@ -95,10 +96,11 @@ void attachProp(SkinnedModel& model, const PropMesh& prop, const std::string& jo
         model.vertices.push_back(v);
     }
     if (!model.uvs.empty()) model.uvs.resize(model.vertices.size(), glm::vec2(0.0f));
-    for (std::uint32_t index : prop.indices) {
-        if (index >= prop.vertices.size()) throw gpu::Error(what + ": an index past its vertices");
-        model.indices.push_back(first + index);
-    }
+    // Level 0 joins the model's full mesh; the coarser levels wait for buildLods, which draws them
+    // beside the body's simplified levels.
+    for (std::uint32_t index : prop.levels[0]) model.indices.push_back(first + index);
+    for (std::size_t l = 1; l < kLodLevels; ++l)
+        for (std::uint32_t index : prop.levels[l]) model.props.back().coarserLevels[l - 1].push_back(first + index);
     model.lods.clear();  // the mesh changed: levels are built again (model/lod_builder.h)
     computeBounds(model);
 }

@@ -3,7 +3,8 @@
 // the joint it is attached to, whose rest transform is the offset. Its vertices are placed in bind
 // space at bindWorld(joint) * offset * local, weighted 1 to that joint, so skinning gives
 // jointWorld * offset * local exactly and culling, levels of detail, shadows, fades and impostors draw
-// it with the character, with no pass of their own. Levels of detail must be (re)built afterwards.
+// it with the character, with no pass of their own. Levels of detail must be (re)built afterwards:
+// buildLods draws the prop's own levels (PropMesh::levels) beside the body's simplified ones.
 #include <string>
 
 #include <glm/glm.hpp>
@@ -17,7 +18,8 @@ namespace model {
 // rotation, a uniform scale and a translation) as prop number model.props.size(). `share`: the part of a
 // crowd that carries it when characters do not choose (0..1). Throws gpu::Error naming the model and
 // the joint when the model has no such joint, and for an offset that is not a rotation with a uniform
-// scale, a share outside [0, 1], more than MAX_PROPS props or too many materials.
+// scale, a share outside [0, 1], more than MAX_PROPS props, too many materials, or a mesh checkPropMesh
+// refuses.
 void attachProp(SkinnedModel& model, const PropMesh& prop, const std::string& joint, const glm::mat4& offset,
                 float share = 1.0f);
 

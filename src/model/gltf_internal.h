@@ -39,6 +39,15 @@ tinygltf::Model parseDocument(std::span<const std::uint8_t> bytes, const std::fi
 // can ignore (channels that target no node). (gltf_json_types.cpp)
 void checkJsonTypes(std::span<const std::uint8_t> json, std::vector<std::string>& notes);
 
+// ---- the file (gltf_loader.cpp) ----
+
+// The bytes of a glTF or GLB file, at most kMaxGltfFileBytes. Throws gpu::Error "<path>: <problem>"
+// (no such file, not a regular file, too large, unreadable).
+std::vector<std::uint8_t> readGltfFile(const std::filesystem::path& path);
+
+// Fails for an extension the document requires that changes what the loader reads.
+void checkRequiredExtensions(const tinygltf::Model& document);
+
 // ---- external files (gltf_external_files.cpp) ----
 
 // The file-system callbacks tinygltf reads every external buffer and image through. A URI must be a
@@ -144,6 +153,10 @@ std::uint32_t paletteEntry(const tinygltf::Model& model, int material, Palette& 
 // skin joint numbers through `jointOfSkinJoint`.
 void appendMesh(const tinygltf::Model& model, int mesh, const std::vector<std::uint32_t>& jointOfSkinJoint,
                 Palette& palette, SkinnedModel& out, std::vector<std::string>& notes);
+
+// The same for a rigid mesh (a prop): every vertex on joint 0 with weight 1; JOINTS_n/WEIGHTS_n are not read.
+void appendRigidMesh(const tinygltf::Model& model, int mesh, Palette& palette, SkinnedModel& out,
+                     std::vector<std::string>& notes);
 
 // Decodes the image of palette.texture into out.baseColorTexture (PNG or JPEG); a texture that
 // cannot be decoded is left out with a note, and out.texturedMaterials stays 0.

@@ -25,10 +25,6 @@ bool harmlessExtension(const std::string& name) {
            name.rfind("KHR_materials_", 0) == 0;
 }
 
-void checkRequiredExtensions(const tinygltf::Model& document) {
-    for (const std::string& name : document.extensionsRequired)
-        if (!harmlessExtension(name)) fail("requires the extension " + name + ", which this loader does not support");
-}
 
 // Nodes of the scene that is shown: the default scene, or the first; every node when there is none.
 std::vector<bool> sceneNodes(const tinygltf::Model& document) {
@@ -164,6 +160,30 @@ SkinnedModel loadNamed(std::span<const std::uint8_t> bytes, const std::string& s
 
 }  // namespace
 
+namespace gltf {
+
+void checkRequiredExtensions(const tinygltf::Model& document) {
+    for (const std::string& name : document.extensionsRequired)
+        if (!harmlessExtension(name)) fail("requires the extension " + name + ", which this loader does not support");
+}
+
+std::vector<std::uint8_t> readGltfFile(const std::filesystem::path& path) {
+    const std::string source = path.string();
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) throw gpu::Error(source + ": no such file");
+    if (!std::filesystem::is_regular_file(path, error)) throw gpu::Error(source + ": not a regular file");
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error) throw gpu::Error(source + ": cannot read its size (" + error.message() + ")");
+    if (size > kMaxGltfFileBytes) throw gpu::Error(source + ": larger than 1 GiB");
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+    std::ifstream file(path, std::ios::binary);
+    if (!file || !file.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
+        throw gpu::Error(source + ": cannot read the file");
+    return bytes;
+}
+
+}  // namespace gltf
+
 bool hasGltfExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -179,16 +199,7 @@ SkinnedModel loadGltfFromMemory(std::span<const std::uint8_t> bytes, const std::
 SkinnedModel loadGltf(const std::filesystem::path& path, std::vector<std::string>* notes,
                       const std::filesystem::path& assetRoot) {
     const std::string source = path.string();
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw gpu::Error(source + ": no such file");
-    if (!std::filesystem::is_regular_file(path, error)) throw gpu::Error(source + ": not a regular file");
-    const std::uintmax_t size = std::filesystem::file_size(path, error);
-    if (error) throw gpu::Error(source + ": cannot read its size (" + error.message() + ")");
-    if (size > kMaxGltfFileBytes) throw gpu::Error(source + ": larger than 1 GiB");
-    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-    std::ifstream file(path, std::ios::binary);
-    if (!file || !file.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
-        throw gpu::Error(source + ": cannot read the file");
+    const std::vector<std::uint8_t> bytes = gltf::readGltfFile(path);
     const std::filesystem::path directory =
         path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
     return loadNamed(bytes, source, path.stem().string(), directory, assetRoot, notes);

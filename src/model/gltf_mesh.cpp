@@ -142,8 +142,9 @@ bool strongestFour(const std::vector<InfluenceSet>& sets, std::size_t v, std::si
     return true;
 }
 
+// `jointOfSkinJoint` null: a rigid mesh (a prop), every vertex on joint 0 and JOINTS/WEIGHTS not read.
 void appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive, const std::string& what,
-                     const std::vector<std::uint32_t>& jointOfSkinJoint, Palette& palette, SkinnedModel& out,
+                     const std::vector<std::uint32_t>* jointOfSkinJoint, Palette& palette, SkinnedModel& out,
                      std::vector<std::string>& notes) {
     const int positionAccessor = attribute(primitive, "POSITION");
     if (positionAccessor < 0) fail(what + ": no POSITION");
@@ -152,7 +153,8 @@ void appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
     const std::size_t n = positions.count;
     if (out.vertices.size() + n > kMaxVertices)
         fail(what + ": the character would have more than " + std::to_string(kMaxVertices) + " vertices");
-    const std::vector<InfluenceSet> influences = readInfluences(model, primitive, n, what);
+    const std::vector<InfluenceSet> influences =
+        jointOfSkinJoint ? readInfluences(model, primitive, n, what) : std::vector<InfluenceSet>{};
 
     std::vector<std::uint32_t> indices;
     if (primitive.indices >= 0) {
@@ -206,14 +208,20 @@ void appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
         gpu::SkinVertex vertex;
         vertex.position = glm::vec4(glm::make_vec3(positions.element(v)), 1.0f);
         vertex.normal = glm::vec4(normals[v], static_cast<float>(material));
-        if (!strongestFour(influences, v, jointOfSkinJoint.size(), vertex, what)) {
+        if (!jointOfSkinJoint) {
+            vertex.joints = glm::uvec4(0u);
+            vertex.weights = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+            out.vertices.push_back(vertex);
+            continue;
+        }
+        if (!strongestFour(influences, v, jointOfSkinJoint->size(), vertex, what)) {
             // No weight at all: glTF leaves such a vertex undefined; follow the skin's first joint
             // (as three.js and Babylon do) rather than collapse it to the origin.
             vertex.joints = glm::uvec4(0u);
             vertex.weights = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
             ++weightless;
         }
-        for (int k = 0; k < MAX_INFLUENCES; ++k) vertex.joints[k] = jointOfSkinJoint[vertex.joints[k]];
+        for (int k = 0; k < MAX_INFLUENCES; ++k) vertex.joints[k] = (*jointOfSkinJoint)[vertex.joints[k]];
         out.vertices.push_back(vertex);
     }
     if (weightless > 0)
@@ -223,10 +231,8 @@ void appendPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pr
     for (const std::uint32_t i : triangles) out.indices.push_back(base + i);
 }
 
-}  // namespace
-
-void appendMesh(const tinygltf::Model& model, int mesh, const std::vector<std::uint32_t>& jointOfSkinJoint,
-                Palette& palette, SkinnedModel& out, std::vector<std::string>& notes) {
+void appendMeshPrimitives(const tinygltf::Model& model, int mesh, const std::vector<std::uint32_t>* jointOfSkinJoint,
+                          Palette& palette, SkinnedModel& out, std::vector<std::string>& notes) {
     if (mesh < 0 || static_cast<std::size_t>(mesh) >= model.meshes.size())
         fail("mesh " + std::to_string(mesh) + " does not exist (the file has " + std::to_string(model.meshes.size()) +
              ")");
@@ -243,6 +249,18 @@ void appendMesh(const tinygltf::Model& model, int mesh, const std::vector<std::u
         if (!primitive.targets.empty()) notes.push_back(what + ": morph targets ignored");
         appendPrimitive(model, primitive, what, jointOfSkinJoint, palette, out, notes);
     }
+}
+
+}  // namespace
+
+void appendMesh(const tinygltf::Model& model, int mesh, const std::vector<std::uint32_t>& jointOfSkinJoint,
+                Palette& palette, SkinnedModel& out, std::vector<std::string>& notes) {
+    appendMeshPrimitives(model, mesh, &jointOfSkinJoint, palette, out, notes);
+}
+
+void appendRigidMesh(const tinygltf::Model& model, int mesh, Palette& palette, SkinnedModel& out,
+                     std::vector<std::string>& notes) {
+    appendMeshPrimitives(model, mesh, nullptr, palette, out, notes);
 }
 
 }  // namespace model::gltf

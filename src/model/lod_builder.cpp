@@ -107,7 +107,25 @@ std::array<std::uint32_t, kLodLevels> reorderVertices(SkinnedModel& model, std::
     }
     for (Triangles& level : levels)
         for (std::uint32_t& index : level) index = oldToNew[index];
+    for (SkinnedModel::PropPart& prop : model.props)
+        for (Triangles& level : prop.coarserLevels)
+            for (std::uint32_t& index : level) index = oldToNew[index];
     return vertexCount;
+}
+
+// The triangles of the body: those not on a prop's joint (a prop is rigid on its own joint,
+// model/attach_prop.h), in their authored order.
+Triangles bodyTriangles(const SkinnedModel& model) {
+    const std::vector<std::uint32_t>& propOfJoint = model.skeleton.propOfJoint;
+    Triangles body;
+    body.reserve(model.indices.size());
+    for (std::size_t t = 0; t + 2 < model.indices.size(); t += 3) {
+        const std::uint32_t joint = model.vertices[model.indices[t]].joints.x;
+        if (joint < propOfJoint.size() && propOfJoint[joint] != 0u) continue;
+        body.insert(body.end(), model.indices.begin() + static_cast<std::ptrdiff_t>(t),
+                    model.indices.begin() + static_cast<std::ptrdiff_t>(t) + 3);
+    }
+    return body;
 }
 
 }  // namespace
@@ -121,11 +139,20 @@ void buildLods(SkinnedModel& model) {
     model.lods.clear();
     std::array<Triangles, kLodLevels> levels;
     levels[0] = model.indices;
-    // Each level is simplified from the one above, not from the full mesh: a collapse only ever moves
-    // a vertex onto another of the parent's, so the levels' vertex sets nest.
+    // Only the body is simplified, at the paper's budgets of its own triangles; each prop draws its own
+    // levels beside it (PropPart::coarserLevels), which use vertices of the prop's level above, so
+    // every level's vertices still nest in the finer level's. Each body level is simplified from the
+    // one above, not from the full mesh: a collapse only ever moves a vertex onto another of the
+    // parent's, so the levels' vertex sets nest.
     const std::vector<std::uint32_t> jointRegions = bendRegions(model);
-    for (std::size_t l = 1; l < kLodLevels; ++l)
-        levels[l] = simplifyLevel(model, jointRegions, levels[l - 1], lodTriangleTarget(model.triangleCount(), l));
+    Triangles body = bodyTriangles(model);
+    const std::size_t bodyTriangleCount = body.size() / 3;
+    for (std::size_t l = 1; l < kLodLevels; ++l) {
+        body = simplifyLevel(model, jointRegions, body, lodTriangleTarget(bodyTriangleCount, l));
+        levels[l] = body;
+        for (const SkinnedModel::PropPart& prop : model.props)
+            levels[l].insert(levels[l].end(), prop.coarserLevels[l - 1].begin(), prop.coarserLevels[l - 1].end());
+    }
     const std::array<std::uint32_t, kLodLevels> vertexCount = reorderVertices(model, levels);
     model.indices = levels[0];
     // The full mesh keeps its authored triangle order (the picture is the same as without LODs); the

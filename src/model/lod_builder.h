@@ -5,16 +5,16 @@
 
 namespace model {
 
-// Number of levels buildLods makes: the paper's soldier has three (1,084 / 544 / 312 polygons).
-inline constexpr std::size_t kLodLevels = 3;
-
 // Triangle budget of level `level` for a model whose full mesh has `fullTriangles` triangles: the
 // paper's ratios 1, 544/1084 and 312/1084, rounded, at least 1.
 std::size_t lodTriangleTarget(std::size_t fullTriangles, std::size_t level);
 
-// Fills model.lods with kLodLevels levels and reorders model.vertices, model.uvs and model.indices
-// so that level l uses exactly the vertices [0, lods[l].vertexCount) (level 0: all of them, its
-// triangles in their authored order). Each level is simplified from the one above with meshoptimizer
+// Fills model.lods with kLodLevels levels: the body (every triangle not on a prop's joint) simplified
+// at the paper's budgets of its own triangle count, and each prop's own levels
+// (SkinnedModel::PropPart::coarserLevels) beside it. Reorders model.vertices, model.uvs,
+// model.indices and the props' levels so that level l uses exactly the vertices
+// [0, lods[l].vertexCount) (level 0: all of them, its triangles in their authored order). Each body
+// level is simplified from the one above with meshoptimizer
 // and lands within 10 % of its budget when the mesh allows it; coarser levels only reuse vertices of
 // finer ones, so every vertex keeps its skin, normal, material and uv. No level has a triangle without
 // area, or a closed part collapsed into a flat sheet; a level the simplifier cannot reduce without

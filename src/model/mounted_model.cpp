@@ -66,7 +66,9 @@ void appendRiderSkeleton(anim::Skeleton& out, const anim::Skeleton& rider, std::
 
 // The rider's props (a soldier's rifle, a flag) stay props of the pair, after the mount's: each
 // character still chooses which it carries, and the pair's bounds leave them out as the rider's did.
-void appendRiderProps(SkinnedModel& out, const SkinnedModel& mount, const SkinnedModel& rider, std::uint32_t jointOffset) {
+// Their own coarser levels follow the rider's vertices, appended after the mount's (`vertexOffset`).
+void appendRiderProps(SkinnedModel& out, const SkinnedModel& mount, const SkinnedModel& rider, std::uint32_t jointOffset,
+                      std::uint32_t vertexOffset) {
     out.props = mount.props;
     if (mount.props.size() + rider.props.size() > MAX_PROPS)
         throw gpu::Error(mount.name + " and " + rider.name + ": " + std::to_string(mount.props.size() + rider.props.size()) +
@@ -75,6 +77,8 @@ void appendRiderProps(SkinnedModel& out, const SkinnedModel& mount, const Skinne
     for (SkinnedModel::PropPart prop : rider.props) {
         prop.joint += jointOffset;
         prop.attachedTo += jointOffset;
+        for (std::vector<std::uint32_t>& level : prop.coarserLevels)
+            for (std::uint32_t& index : level) index += vertexOffset;
         out.props.push_back(prop);
     }
     if (out.props.empty()) return;
@@ -145,7 +149,7 @@ SkinnedModel mountRider(const SkinnedModel& mount, const SkinnedModel& rider, co
     out.skeleton = mount.skeleton;
     const auto jointOffset = static_cast<std::uint32_t>(mount.skeleton.jointCount());
     appendRiderSkeleton(out.skeleton, rider.skeleton, saddle, mountRest[saddle], placement);
-    appendRiderProps(out, mount, rider, jointOffset);
+    appendRiderProps(out, mount, rider, jointOffset, static_cast<std::uint32_t>(mount.vertices.size()));
     mergeMaterials(out, mount, rider, notes);
     out.vertices = mount.vertices;
     out.indices = mount.indices;

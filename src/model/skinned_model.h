@@ -1,5 +1,6 @@
 #pragma once
 // A skinned character: mesh, skeleton, clips and material palette, ready for the GPU.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,6 +12,10 @@
 #include "gpu_types.h"
 
 namespace model {
+
+// Number of levels of detail a model has (model/lod_builder.h): the paper's soldier has three
+// (1,084 / 544 / 312 polygons).
+inline constexpr std::size_t kLodLevels = 3;
 
 struct SkinnedModel {
     std::string name;
@@ -58,6 +63,10 @@ struct SkinnedModel {
         std::uint32_t joint = 0;       // the prop's own joint
         std::uint32_t attachedTo = 0;  // the joint it hangs from
         float share = 1.0f;            // of the characters that carry it when they do not choose
+        // The prop's own triangles at levels 1 and 2 (coarserLevels[l - 1], model vertex indices; its
+        // level 0 is part of `indices`), which buildLods draws beside the body's simplified levels
+        // instead of simplifying the prop with the body. Empty: not drawn at that level.
+        std::array<std::vector<std::uint32_t>, kLodLevels - 1> coarserLevels;
     };
     std::vector<PropPart> props;
 
