@@ -133,11 +133,11 @@ void fireSegment(uint c, MotionRecord m, float begin, float end) {
                 base = fromPoint + floor(point - fromPoint + 0.5);
                 drift = point - base;
             }
-            // Every meeting of base + k between the window's phases (the point moves by at most half
-            // a cycle; one more either side for rounding: the times decide); a window of more than
+            // Every meeting of base + k between the window's phases less the point's drift (between 0
+            // and drift), one more either side for rounding: the times decide; a window of more than
             // EVENT_MAX_CYCLES cycles keeps its end.
-            float kLast = ceil(last - base) + 2.0;
-            float kFirst = max(floor(first - base) - 2.0, kLast - EVENT_MAX_CYCLES);
+            float kLast = ceil(last - min(drift, 0.0) - base) + 1.0;
+            float kFirst = max(floor(first - max(drift, 0.0) - base) - 1.0, kLast - EVENT_MAX_CYCLES);
             for (float k = kFirst; k <= kLast; k += 1.0) {
                 float elapsed = phaseWhen(m, base + k, drift);
                 float t = start + elapsed;

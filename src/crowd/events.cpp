@@ -72,9 +72,11 @@ void segmentEvents(const Segment& segment, const model::SkinnedModel& model, con
         const anim::Clip& c = model.clips[clip];
         const float duration = library.duration(modelIndex, clip);
         if (!(duration > 0.0f)) continue;
-        // Pairs need both clips to have a length (a clip of none fires nothing).
+        // Pairs need both clips to have events and a length (a clip of none fires nothing); most fades
+        // (to and from a standing clip with no events) skip the search.
         const float fromDuration = library.duration(modelIndex, clipFrom);
-        const bool pairing = crossfade && fromDuration > 0.0f && library.duration(modelIndex, clipTo) > 0.0f;
+        const bool pairing = crossfade && !model.clips[clipFrom].events.empty() && !model.clips[clipTo].events.empty() &&
+                             fromDuration > 0.0f && library.duration(modelIndex, clipTo) > 0.0f;
         for (std::uint32_t e = 0; e < c.events.size(); ++e) {
             // A paired event (crowd/event_pairs.h) fires once, from its to-clip's side, where the
             // phase meets the point blended by the weight; an unpaired one fires from its clip while
@@ -88,9 +90,11 @@ void segmentEvents(const Segment& segment, const model::SkinnedModel& model, con
             const BlendedPoint blend =
                 partner >= 0 ? blendedPoint(static_cast<double>(model.clips[clipFrom].events[partner].time) / fromDuration, point)
                              : BlendedPoint{point, 0.0};
-            // Every meeting of blend.base + k between the window's phases (the point moves by at most
-            // half a cycle; one more either side for rounding: the times decide).
-            for (double k = std::floor(first - blend.base) - 2.0; k <= std::ceil(last - blend.base) + 2.0; k += 1.0) {
+            // Every meeting of blend.base + k between the window's phases less the point's drift (it
+            // lies between 0 and blend.drift), one more either side for rounding: the times decide.
+            const double kFirst = std::floor(first - std::max(blend.drift, 0.0) - blend.base) - 1.0;
+            const double kLast = std::ceil(last - std::min(blend.drift, 0.0) - blend.base) + 1.0;
+            for (double k = kFirst; k <= kLast; k += 1.0) {
                 const double elapsed = curve.when(blend.base + k, blend.drift);
                 if (elapsed < 0.0) continue;
                 const double t = segment.start + elapsed;
