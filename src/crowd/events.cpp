@@ -65,18 +65,17 @@ void segmentEvents(const Segment& segment, const model::SkinnedModel& model, con
     const double first = curve.at(std::max(lo - segment.start, 0.0)), last = curve.at(std::max(hi - segment.start, 0.0));
     const std::uint32_t clipFrom = m.clips.x, clipTo = m.clips.y;
     const std::size_t mark = out.size();
-    const bool crossfade = clipFrom != clipTo && curve.fade > 0.0;
+    // Pairs need a crossfade of two clips that both have events and a length (a clip of none fires
+    // nothing); most fades (to and from a standing clip with no events) skip the search.
+    const float fromDuration = library.duration(modelIndex, clipFrom);
+    const bool pairing = clipFrom != clipTo && curve.fade > 0.0 && !model.clips[clipFrom].events.empty() &&
+                         !model.clips[clipTo].events.empty() && fromDuration > 0.0f && library.duration(modelIndex, clipTo) > 0.0f;
     const std::uint32_t clips[2] = {clipTo, clipFrom};
     for (std::uint32_t i = 0; i < (clipFrom == clipTo ? 1u : 2u); ++i) {
         const std::uint32_t clip = clips[i];
         const anim::Clip& c = model.clips[clip];
         const float duration = library.duration(modelIndex, clip);
         if (!(duration > 0.0f)) continue;
-        // Pairs need both clips to have events and a length (a clip of none fires nothing); most fades
-        // (to and from a standing clip with no events) skip the search.
-        const float fromDuration = library.duration(modelIndex, clipFrom);
-        const bool pairing = crossfade && !model.clips[clipFrom].events.empty() && !model.clips[clipTo].events.empty() &&
-                             fromDuration > 0.0f && library.duration(modelIndex, clipTo) > 0.0f;
         for (std::uint32_t e = 0; e < c.events.size(); ++e) {
             // A paired event (crowd/event_pairs.h) fires once, from its to-clip's side, where the
             // phase meets the point blended by the weight; an unpaired one fires from its clip while
