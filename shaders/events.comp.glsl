@@ -34,24 +34,39 @@ layout(std430, set = 0, binding = 10) buffer Events {
 // A firing time that never comes (below every segment's start).
 const float NEVER = -3.0e38;
 
-// The elapsed time at which the segment's phase reaches `target`, or NEVER (crowd/events.cpp,
-// PhaseCurve::when): through a crossfade the rate moves linearly from one clip's to the other's, so the
-// phase is quadratic there and linear after. Negative before the record's start: a record restated at
-// the epoch (crowd/segment.h: steady, linear) holds back to its segment's true start.
-float phaseWhen(MotionRecord m, float target) {
+// The first elapsed time at which the segment's phase meets `target + drift * weight`, or NEVER
+// (crowd/events.cpp, PhaseCurve::when): through a crossfade the rate moves linearly from one clip's to
+// the other's, so the phase is quadratic there and linear after; a pair of events' point drifts with
+// the weight and is met once, at the first meeting. Negative before the record's start: a record
+// restated at the epoch (crowd/segment.h: steady, linear) holds back to its segment's true start.
+float phaseWhen(MotionRecord m, float target, float drift) {
     float fade = m.timing.y, rateFrom = m.phase.y, rateTo = m.phase.z;
     float d = target - m.phase.x;
     if (fade > 0.0) {
-        float fadeEnd = motionPhase(m, fade);
+        if (d < 0.0) return NEVER;  // met before this segment
+        // a e^2 + b e = d; with d >= 0 its first non-negative root is 2d / (b + sqrt(disc)) if any.
+        float a = (rateTo - rateFrom) / (2.0 * fade), b = rateFrom - drift / fade;
+        float fadeEnd = motionPhase(m, fade) - drift;
+        float disc = b * b + 4.0 * a * d;
         if (target <= fadeEnd) {
-            // a e^2 + b e = d, the root in [0, fade] in the form that stays exact when a is 0.
-            float a = (rateTo - rateFrom) / (2.0 * fade), b = rateFrom;
-            float root = sqrt(max(b * b + 4.0 * a * d, 0.0));
+            float root = sqrt(max(disc, 0.0));
             return b + root > 0.0 ? 2.0 * d / (b + root) : NEVER;
+        }
+        if (disc >= 0.0) {
+            // Met inside the fade and passed back before its end.
+            float root = sqrt(disc);
+            if (b + root > 0.0 && 2.0 * d / (b + root) <= fade) return 2.0 * d / (b + root);
         }
         return rateTo > 0.0 ? fade + (target - fadeEnd) / rateTo : NEVER;
     }
     return rateTo > 0.0 ? d / rateTo : NEVER;
+}
+
+// The event of clip range `range` whose pair key is `key` (>= 0), or -1.
+int partnerIn(uvec2 range, float key) {
+    for (uint e = range.x; e < range.x + range.y; ++e)
+        if (eventTable[e].moment.w == key) return int(e);
+    return -1;
 }
 
 // Where the event happens: the character's placement at that moment applied to the joint's position
@@ -93,22 +108,49 @@ void fireSegment(uint c, MotionRecord m, float begin, float end) {
     float start = m.timing.x, fade = m.timing.y;
     float first = motionPhase(m, lo - start), last = motionPhase(m, hi - start);
     uint clipFrom = m.clips.x, clipTo = m.clips.y;
+    bool crossfade = clipFrom != clipTo && fade > 0.0;
+    uvec2 fromRange = clipEvents[firstClip + clipFrom];
     for (uint i = 0u; i < (clipFrom == clipTo ? 1u : 2u); ++i) {
         uint clip = i == 0u ? clipTo : clipFrom;
         uvec2 range = clipEvents[firstClip + clip];
         for (uint e = range.x; e < range.x + range.y; ++e) {
             AnimationEvent event = eventTable[e];
-            float point = event.moment.x;
-            // Every crossing of point + k between the window's phases, one more either side for
-            // rounding (the times decide); a window of more than EVENT_MAX_CYCLES cycles keeps its end.
-            float kLast = ceil(last - point) + 1.0;
-            float kFirst = max(floor(first - point) - 1.0, kLast - EVENT_MAX_CYCLES);
+            // A paired event (crowd/event_pairs.h: equal keys) fires once, from the to-clip's side,
+            // where the phase meets the point blended by the weight; others fire from their clip
+            // while it weighs more.
+            int partner = -1;
+            if (crossfade && event.moment.w >= 0.0) {
+                if (clip == clipFrom) {
+                    if (partnerIn(clipEvents[firstClip + clipTo], event.moment.w) >= 0) continue;
+                } else {
+                    partner = partnerIn(fromRange, event.moment.w);
+                }
+            }
+            float point = event.moment.x, base = point, drift = 0.0;
+            if (partner >= 0) {
+                // The from-clip's point within half a cycle of the to-clip's (crowd::blendedPoint).
+                float fromPoint = eventTable[partner].moment.x;
+                base = fromPoint + floor(point - fromPoint + 0.5);
+                drift = point - base;
+            }
+            // Every meeting of base + k between the window's phases less the point's drift (between 0
+            // and drift), one more either side for rounding: the times decide; a window of more than
+            // EVENT_MAX_CYCLES cycles keeps its end.
+            float kLast = ceil(last - min(drift, 0.0) - base) + 1.0;
+            float kFirst = max(floor(first - max(drift, 0.0) - base) - 1.0, kLast - EVENT_MAX_CYCLES);
             for (float k = kFirst; k <= kLast; k += 1.0) {
-                float elapsed = phaseWhen(m, point + k);
+                float elapsed = phaseWhen(m, base + k, drift);
                 float t = start + elapsed;
                 if (!(t > from && t <= to && t >= begin && t < end)) continue;
-                // The clip of the larger weight fires (the one faded to from half way on).
                 bool toWins = !(fade > 0.0) || elapsed >= 0.5 * fade;
+                if (partner >= 0) {
+                    // The pair is reported as the event of the clip that weighs more then, placed
+                    // on that clip's pose.
+                    uint firing = toWins ? e : uint(partner);
+                    append(c, toWins ? clipTo : clipFrom, uint(eventTable[firing].moment.z),
+                           worldPlace(c, m, firstClip, elapsed, eventTable[firing].place.xyz), to - t);
+                    continue;
+                }
                 if (clipFrom != clipTo && (clip == clipTo) != toWins) continue;
                 append(c, clip, uint(event.moment.z), worldPlace(c, m, firstClip, elapsed, event.place.xyz), to - t);
             }

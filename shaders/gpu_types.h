@@ -386,7 +386,8 @@ struct SceneUniforms {
 // table: first, count), and per event where it falls in the cycle and where its joint is then.
 struct AnimationEvent {
     vec4 moment;  // x: point in the cycle (event time / clip duration), y: joint (-1: none; exact as a
-                  // float), z: the event's index among its clip's events (exact as a float), w: unused
+                  // float), z: the event's index among its clip's events (exact as a float), w: its pair key
+                  // (crowd/event_pairs.h: a crossfade's two events of equal keys >= 0 fire as one; -1 none)
     vec4 place;   // xyz: the joint's model-space position at that moment of its clip alone (the clip's
                   // pose with no placement; 0 without a joint), w: unused
 };

@@ -30,15 +30,20 @@ std::uint32_t jointNamed(const model::SkinnedModel& model, const std::string& na
     return static_cast<std::uint32_t>(it - names.begin());
 }
 
-// The soldier with footsteps on its walk and run (at the feet, a quarter and 0.7 of the cycle, as a glTF
-// file's extras would set them) and a breath on its idle with no joint (placed at the root).
+// The soldier with footsteps on its walk and run (at the feet, a quarter and 0.7 of the walk's cycle,
+// 0.15 and 0.62 of the run's, as a glTF file's extras would set them) and a breath on its idle with no
+// joint (placed at the root).
 model::SkinnedModel soldierWithEvents() {
     model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const auto left = static_cast<std::int32_t>(jointNamed(soldier, "foot_l"));
     const auto right = static_cast<std::int32_t>(jointNamed(soldier, "foot_r"));
     for (anim::Clip& clip : soldier.clips) {
-        if (clip.name == "walk" || clip.name == "run")
+        if (clip.name == "walk")
             clip.events = {{"step.left", 0.25f * clip.duration, left}, {"step.right", 0.7f * clip.duration, right}};
+        // The run's steps lie elsewhere in its cycle, so a walk <-> run crossfade fires each pair
+        // where the phase meets a point that moves with the weight (crowd/event_pairs.h).
+        if (clip.name == "run")
+            clip.events = {{"step.left", 0.15f * clip.duration, left}, {"step.right", 0.62f * clip.duration, right}};
         if (clip.name == "idle") clip.events = {{"breath", 0.5f * clip.duration, -1}};
     }
     return soldier;
@@ -84,6 +89,7 @@ bool byWhoAndWhen(const Fired& a, const Fired& b) {
 
 struct Comparison {
     std::size_t matched = 0, nearEdge = 0, beforeReplan = 0, inCrossfade = 0;
+    std::size_t paired = 0;  // of those in crossfades, fired by a walk <-> run pair (a moving point)
     double worstTime = 0.0, worstPlace = 0.0, worstPlaceInCrossfade = 0.0;
 };
 
@@ -118,8 +124,12 @@ void compareFrame(const crowd::Crowd& crowd, const model::SkinnedModel& soldier,
             expected = {world.row0.w, world.row1.w, world.row2.w};
         }
         const double error = glm::length(gpu.place - expected);
-        if (crowd.stateKnown(cpu.character, cpu.time).weight < 1.0f) {
+        const crowd::MotionState state = crowd.stateKnown(cpu.character, cpu.time);
+        if (state.weight < 1.0f) {
             ++out.inCrossfade;
+            if (!soldier.clips[state.clipFrom].events.empty() && !soldier.clips[state.clipTo].events.empty() &&
+                soldier.clips[state.clipFrom].name != "idle" && soldier.clips[state.clipTo].name != "idle")
+                ++out.paired;
             out.worstPlaceInCrossfade = std::max(out.worstPlaceInCrossfade, error);
         } else {
             out.worstPlace = std::max(out.worstPlace, error);
@@ -140,15 +150,25 @@ struct OrbitRun : Comparison {
 // A milling crowd of `count` soldiers (walks, stops, crossfades, replans inside frames) seen by a close
 // orbiting camera, so characters come into and leave the view: `frames` frames at 60 Hz from `start`,
 // each frame's GPU list against Crowd::events for the characters the frame had in view.
+// With `walkRunFades` the crowd stands in place instead and every character is commanded to walk, then
+// to crossfade between walk and run and back (0.5 s) every 40 frames, at its own frame: walk <-> run
+// pairs whose point moves with the weight.
 OrbitRun compareAlongAnOrbit(const gpu::VulkanContext& context, test::RendererOptions options, std::uint32_t count,
-                             int frames, double start) {
+                             int frames, double start, bool walkRunFades = false) {
     const model::SkinnedModel soldier = soldierWithEvents();
     app::SceneOptions scene;
     scene.count = count;
     crowd::BehaviourSettings behaviour;
-    behaviour.kind = crowd::Behaviour::Mill;
+    behaviour.kind = walkRunFades ? crowd::Behaviour::InPlace : crowd::Behaviour::Mill;
     behaviour.millRadius = 4.0f;
     crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene), behaviour);
+    std::int32_t walkClip = 0, runClip = 0;
+    for (std::uint32_t clip = 0; clip < soldier.clips.size(); ++clip) {
+        if (soldier.clips[clip].name == "walk") walkClip = static_cast<std::int32_t>(clip);
+        if (soldier.clips[clip].name == "run") runClip = static_cast<std::int32_t>(clip);
+    }
+    if (walkRunFades)
+        for (std::uint32_t c = 0; c < crowd.size(); ++c) crowd.play(c, walkClip, 0.0, 0.0f, 1.0f);
     options.size = {160, 90};
     options.shadows = false;
     test::TestRenderer renderer(context, crowd, options);
@@ -157,6 +177,10 @@ OrbitRun compareAlongAnOrbit(const gpu::VulkanContext& context, test::RendererOp
     double previous = 0.0;
     for (int frame = 0; frame <= frames; ++frame) {
         const double time = start + frame * kFrame;
+        if (walkRunFades)
+            for (std::uint32_t c = 0; c < crowd.size(); ++c)
+                if ((frame + c) % 40 == 0)
+                    crowd.play(c, (frame + c) % 80 == 0 ? runClip : walkClip, time + 0.001, 0.5f, 1.0f);
         // Orbiting, closer than the framing view: the crowd's edges come into and leave the view.
         renderer.camera = app::cameraOnPath(app::CameraPath::Orbit, shape, 160.0f / 90.0f, 8.0 * time);
         renderer.camera.eye = renderer.camera.target + 0.3f * (renderer.camera.eye - renderer.camera.target);
@@ -192,10 +216,10 @@ OrbitRun compareAlongAnOrbit(const gpu::VulkanContext& context, test::RendererOp
         compareFrame(crowd, soldier, gpuEvents, cpuEvents, previous, time, run);
         previous = time;
     }
-    std::printf("[ events ] %zu matched (%zu near a frame's edge, %zu before a replan, %zu in crossfades, %zu before the "
-                "epoch); %zu character-frames out of view, %zu replanned twice in a frame; worst time %.2g s, place "
+    std::printf("[ events ] %zu matched (%zu near a frame's edge, %zu before a replan, %zu in crossfades (%zu of them walk <-> "
+                "run pairs), %zu before the epoch); %zu character-frames out of view, %zu replanned twice in a frame; worst time %.2g s, place "
                 "%.2g m (%.2g m in crossfades)\n",
-                run.matched, run.nearEdge, run.beforeReplan, run.inCrossfade, run.beforeEpoch, run.outOfView,
+                run.matched, run.nearEdge, run.beforeReplan, run.inCrossfade, run.paired, run.beforeEpoch, run.outOfView,
                 run.replannedTwice, run.worstTime, run.worstPlace, run.worstPlaceInCrossfade);
     return run;
 }
@@ -220,6 +244,22 @@ TEST_F(GpuTest, GpuEventsEqualTheCrowdsEventsForTheCharactersInView) {
     // In a crossfade the GPU takes the firing clip's pose alone (weight >= 1/2): within 10 cm.
     EXPECT_LT(run.worstPlace, 1e-3);
     EXPECT_LT(run.worstPlaceInCrossfade, 0.1);
+}
+
+// Walk <-> run crossfades commanded every 40 frames (docs/events.md#firing): the pairs of the walk's
+// and the run's steps (points 0.1 and 0.08 of a cycle apart) fire once, where the phase meets the
+// point blended by the weight, on the GPU as on the CPU.
+TEST_F(GpuTest, GpuEventsEqualTheCrowdsEventsThroughWalkRunCrossfades) {
+    test::RendererOptions options;
+    options.method = skin::Method::Compute;
+    const OrbitRun run = compareAlongAnOrbit(*context, options, 100, 120, 2.005, true);
+    EXPECT_GT(run.paired, 20u);
+    EXPECT_LE(run.nearEdge, run.cpuTotal / 50);
+    EXPECT_LT(run.worstTime, kTimeTolerance);
+    EXPECT_LT(run.worstPlace, 1e-3);
+    // The GPU places a pair on the firing clip's pose at that clip's own point, while the pair fires
+    // at the blended point, up to 0.1 cycles away: measured 12 cm from jointWorld's blended pose.
+    EXPECT_LT(run.worstPlaceInCrossfade, 0.15);
 }
 
 // The same with the CPU animation path (the event pass uploads the segments itself) and CPU culling

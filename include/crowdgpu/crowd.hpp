@@ -132,8 +132,10 @@ public:
     // character's in time order. An event fires each time the character's phase passes its point in
     // the clip's cycle; its time is solved from the closed-form motion (rate changes, crossfades and
     // replans included), so a window gives the same events in one call as split over frames. In a
-    // crossfade an event fires from the clip of the larger weight only (the clip faded to from half
-    // way on). The window obeys jointWorld's times: ask for each frame's (previous time, time] after
+    // crossfade two events of the same name and joint, one in each clip (a walk's and a run's
+    // footstep of one foot), fire once, where the phase meets their points blended by the weight,
+    // reported as the event of the clip that weighs more then; any other event fires from its clip
+    // while that clip weighs more (the clip faded to from half way on). The window obeys jointWorld's times: ask for each frame's (previous time, time] after
     // advanceTo(time); a window reaching back before a character's previous segment throws
     // Error(InvalidArgument), as does a character that does not exist. Cost: about 100 ns a
     // character for a frame's window (docs/events.md), calling thread only; safe to call from

@@ -4,10 +4,11 @@
 // solved from the segment, not found by stepping frames: a window (from, to] gets the same events in one
 // call as in any number of calls that split it.
 //
-// Crossfades: both clips sit at the same point of their cycles, so both clips' events could fire; an
-// event fires from the clip of the larger blend weight at its moment only (the clip faded to from half
-// way on), so a walk -> run never steps a foot twice at once. It can skip one where the two clips'
-// points of that foot straddle the half-way moment (docs/events.md#firing).
+// Crossfades: both clips sit at the same point of their cycles, so both clips' events could fire.
+// Events that pair (crowd/event_pairs.h: a walk's and a run's footstep of one foot) fire once, where
+// the phase meets their points blended by the weight, so the fade neither skips nor repeats a step;
+// any other event fires from its clip while that clip weighs more (the clip faded to from half way
+// on). docs/events.md#firing.
 #include <cstdint>
 #include <vector>
 

@@ -7,6 +7,7 @@
 #include "anim/soa_palette_job.h"
 #include "anim/soa_sampling_job.h"
 #include "crowd/epoch.h"
+#include "crowd/event_pairs.h"
 #include "crowd/segment.h"
 #include "events.comp.spv.h"
 #include "gpu/barriers.h"
@@ -51,6 +52,7 @@ EventTables eventTables(const crowd::Crowd& crowd) {
     tables.ranges.resize(library.clips().size(), glm::uvec2(0u));
     for (std::uint32_t m = 0; m < crowd.models().size(); ++m) {
         const model::SkinnedModel& model = crowd.model(m);
+        const std::vector<std::vector<std::int32_t>> pairKeys = crowd::eventPairKeys(model.clips);
         for (std::uint32_t clip = 0; clip < library.clipCount(m); ++clip) {
             const std::vector<anim::ClipEvent>& events = model.clips[clip].events;
             const float duration = library.duration(m, clip);
@@ -64,7 +66,8 @@ EventTables eventTables(const crowd::Crowd& crowd) {
                 const glm::vec3 place = event.joint >= 0
                                             ? jointInClip(library, m, clip, point * duration, static_cast<std::uint32_t>(event.joint))
                                             : glm::vec3(0.0f);
-                tables.events.push_back({glm::vec4(point, static_cast<float>(event.joint), static_cast<float>(e), 0.0f),
+                tables.events.push_back({glm::vec4(point, static_cast<float>(event.joint), static_cast<float>(e),
+                                                   static_cast<float>(pairKeys[clip][e])),
                                          glm::vec4(place, 0.0f)});
             }
         }
