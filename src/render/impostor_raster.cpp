@@ -11,9 +11,9 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/raster_mode.h"
+#include "render/visibility_resolve.h"
 #include "impostor_raster.comp.spv.h"
 #include "impostor_resolve.frag.spv.h"
-#include "impostor_resolve.vert.spv.h"
 
 namespace render {
 
@@ -70,14 +70,7 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
                                                       resolvePrototype_->layout()};
         const VkPushConstantRange resolvePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ResolvePush)};
         resolveLayout_ = gpu::createPipelineLayout(context, resolveSets, {&resolvePush, 1});
-        gpu::GraphicsPipelineDesc desc;
-        desc.vertexShader = impostor_resolve_vert_spv;
-        desc.fragmentShader = impostor_resolve_frag_spv;
-        desc.colorFormats = {target.color};
-        desc.depthFormat = target.depth;
-        desc.layout = resolveLayout_;
-        desc.cullMode = VK_CULL_MODE_NONE;
-        resolvePipeline_ = gpu::createGraphicsPipeline(context, desc);
+        resolvePipeline_ = createVisibilityResolve(context, impostor_resolve_frag_spv, resolveLayout_, target);
     } catch (...) {
         release();
         throw;

@@ -10,7 +10,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/raster_mode.h"
-#include "impostor_resolve.vert.spv.h"
+#include "render/visibility_resolve.h"
 #include "mesh_raster.comp.spv.h"
 #include "mesh_raster_split.comp.spv.h"
 #include "mesh_resolve.frag.spv.h"
@@ -101,14 +101,7 @@ void MeshRaster::makePipelines(VkDescriptorSetLayout sceneSetLayout) {
     const VkDescriptorSetLayout resolveSets[2] = {sceneSetLayout, resolvePrototype.layout()};
     const VkPushConstantRange resolvePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ResolvePush)};
     resolveLayout_ = gpu::createPipelineLayout(context_, resolveSets, {&resolvePush, 1});
-    gpu::GraphicsPipelineDesc desc;
-    desc.vertexShader = impostor_resolve_vert_spv;
-    desc.fragmentShader = mesh_resolve_frag_spv;
-    desc.colorFormats = {target_.color};
-    desc.depthFormat = target_.depth;
-    desc.layout = resolveLayout_;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    resolvePipeline_ = gpu::createGraphicsPipeline(context_, desc);
+    resolvePipeline_ = createVisibilityResolve(context_, mesh_resolve_frag_spv, resolveLayout_, target_);
 }
 
 void MeshRaster::release() {
