@@ -310,15 +310,11 @@ TEST_F(GpuTest, AnImpostorCrossingAutosLimitKeepsItsPixels) {
     options.raster = render::RasterMode::Auto;
     options.rasterLimitPixels = 40.0f;
     test::TestRenderer automatic(*device, crowd, options);
-    const float focal = 60.0f / std::tan(0.5f * render::Camera{}.verticalFov);
     std::uint32_t onHardware = 0, onCompute = 0;
     for (int step = 0; step < 8; ++step) {
         // The pose sphere from 32 to 46 px across: its quad's rectangle crosses 40 px on the way.
         const float across = 32.0f + 2.0f * float(step);
-        render::Camera camera;
-        const float centre = glm::vec3(soldier.poseSphere).y;
-        camera.target = glm::vec3(0.0f, centre, 0.0f);
-        camera.eye = camera.target + glm::vec3(0.0f, 0.3f, 1.0f) * (2.0f * soldier.poseSphere.w * focal / across);
+        const render::Camera camera = test::cameraSeeingSphereAcross(soldier, across);
         for (test::TestRenderer* r : {&hardware, &automatic, &emptyRenderer}) r->camera = test::appCamera(camera);
         const RasterFrame h = renderFrame(*context, hardware, 0.25 * step);
         const RasterFrame a = renderFrame(*context, automatic, 0.25 * step);
@@ -326,19 +322,13 @@ TEST_F(GpuTest, AnImpostorCrossingAutosLimitKeepsItsPixels) {
         ASSERT_EQ(a.lods.impostors, 1u) << "step " << step;
         ASSERT_EQ(a.split.computeCount + a.split.hardwareCount, 1u);
         onCompute += a.split.computeCount, onHardware += a.split.hardwareCount;
-        std::size_t pixels = 0, close = 0, near = 0;
-        for (std::size_t i = 0; i < a.visibility.size(); ++i) {
-            if (test::pixelWithin(h.image, e.image, i, 0) && test::pixelWithin(a.image, e.image, i, 0)) continue;
-            ++pixels;
-            close += test::pixelWithin(h.image, a.image, i, 2) ? 1 : 0;
-            near += test::pixelWithin(h.image, a.image, i, 24) ? 1 : 0;
-        }
+        const test::CharacterAgreement agreement = test::characterAgreement(h.image, a.image, e.image);
         std::printf("%.0f px: %s path, %zu soldier pixels, %.1f %% within 2/255, %.1f %% within 24/255\n", across,
-                    a.split.computeCount ? "compute" : "hardware", pixels, 100.0 * double(close) / double(pixels),
-                    100.0 * double(near) / double(pixels));
-        EXPECT_GT(pixels, 100u);
-        EXPECT_GE(double(close) / double(pixels), 0.97) << "step " << step;
-        EXPECT_GE(double(near) / double(pixels), 0.99) << "step " << step;
+                    a.split.computeCount ? "compute" : "hardware", agreement.pixels, 100.0 * agreement.share2(),
+                    100.0 * agreement.share24());
+        EXPECT_GT(agreement.pixels, 100u);
+        EXPECT_GE(agreement.share2(), 0.97) << "step " << step;
+        EXPECT_GE(agreement.share24(), 0.99) << "step " << step;
         if (HasFailure()) test::keepRasterImages("raster-switch", h.image, a.image);
     }
     EXPECT_GE(onCompute, 2u);

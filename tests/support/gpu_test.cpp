@@ -389,6 +389,25 @@ bool pixelWithin(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t
     return true;
 }
 
+CharacterAgreement characterAgreement(const app::Rgba8Image& a, const app::Rgba8Image& b, const app::Rgba8Image& background) {
+    CharacterAgreement agreement;
+    for (std::size_t i = 0; i < a.pixels.size() / 4; ++i) {
+        if (pixelWithin(a, background, i, 0) && pixelWithin(b, background, i, 0)) continue;
+        ++agreement.pixels;
+        agreement.within2 += pixelWithin(a, b, i, 2) ? 1 : 0;
+        agreement.within24 += pixelWithin(a, b, i, 24) ? 1 : 0;
+    }
+    return agreement;
+}
+
+render::Camera cameraSeeingSphereAcross(const model::SkinnedModel& model, float across) {
+    render::Camera camera;
+    const float focal = 60.0f / std::tan(0.5f * camera.verticalFov);  // pixels per unit at unit distance
+    camera.target = glm::vec3(0.0f, glm::vec3(model.poseSphere).y, 0.0f);
+    camera.eye = camera.target + glm::vec3(0.0f, 0.3f, 1.0f) * (2.0f * model.poseSphere.w * focal / across);
+    return camera;
+}
+
 void keepRasterImages(const std::string& name, const app::Rgba8Image& hardware, const app::Rgba8Image& compute) {
     app::writePng(artifactPath(name + "-hardware.png"), hardware);
     app::writePng(artifactPath(name + "-compute.png"), compute);

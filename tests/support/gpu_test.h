@@ -130,6 +130,17 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, TestRen
 double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b, int tolerance);
 // Whether pixel `pixel` (row-major) of the two images differs by at most `tolerance` in R, G and B.
 bool pixelWithin(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance);
+// Over the pixels where either picture differs from `background` (the same scene without the character):
+// how many, and how many of them agree within 2/255 and within 24/255.
+struct CharacterAgreement {
+    std::size_t pixels = 0, within2 = 0, within24 = 0;
+    double share2() const { return double(within2) / double(pixels ? pixels : 1); }
+    double share24() const { return double(within24) / double(pixels ? pixels : 1); }
+};
+CharacterAgreement characterAgreement(const app::Rgba8Image& a, const app::Rgba8Image& b, const app::Rgba8Image& background);
+// A camera looking at a model standing at the origin, slightly from above, so that its pose sphere is
+// `across` pixels wide in a view 120 pixels tall.
+render::Camera cameraSeeingSphereAcross(const model::SkinnedModel& model, float across);
 // Keeps a hardware-raster and a compute-raster picture for a look (artifactPath(name + "-hardware.png"), ...).
 void keepRasterImages(const std::string& name, const app::Rgba8Image& hardware, const app::Rgba8Image& compute);
 
