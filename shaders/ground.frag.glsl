@@ -10,6 +10,10 @@ layout(location = 0) in vec3 inWorld;
 layout(location = 0) out vec4 outColor;
 // Off only in tests, which measure what the filter gains against the tiles point-sampled.
 layout(constant_id = 0) const bool kFilteredTiles = true;
+// Off only in tests: the sunlight from nine shadow-map comparisons a pixel, the reference.
+layout(constant_id = 1) const bool kSunlightImage = true;
+// The shadow map's comparisons on the ground, per map texel, mipmapped (render/ground_sunlight.h).
+layout(set = 0, binding = 4) uniform sampler2D groundSunlight;
 
 // The share of the pixel's footprint that lies on odd tiles (tile.x + tile.y odd), for `p` in tile
 // units: the checker's square wave box-filtered over the footprint, which is the difference of its
@@ -23,8 +27,20 @@ float oddTileShare(vec2 p) {
     return 0.5 - 0.5 * i.x * i.y;  // i: +1 on even, -1 on odd columns (rows), averaged over the box
 }
 
+// The sunlight on the ground here: one trilinear fetch of the ground sunlight image, whose texels are
+// the comparisons sunlight() would make at their centres and whose levels average them, so the far
+// ground's shadows are filtered over the pixel's footprint too. Outside the map: lit, as sunlight().
+float groundSunlightAt(vec3 world) {
+    if (!kSunlightImage) return sunlight(scene, world);
+    if (scene.shadow.x == 0.0) return 1.0;
+    vec2 uv = (scene.lightViewProjection * vec4(world, 1.0)).xy * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    return texture(groundSunlight, uv).r;
+}
+
 void main() {
     float checker = mix(1.0, 0.86, oddTileShare(inWorld.xz / scene.groundColor.w));
     vec3 albedo = scene.groundColor.rgb * checker;
-    outColor = vec4(shade(scene, vec3(0.0, 1.0, 0.0), albedo, inWorld, cameraPosition.xyz), 1.0);
+    vec3 color = shadeWithSunlight(scene, vec3(0.0, 1.0, 0.0), albedo, inWorld, groundSunlightAt(inWorld), cameraPosition.xyz);
+    outColor = vec4(color, 1.0);
 }

@@ -63,7 +63,9 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       maxTargetDimension_(options.maxTargetDimension),
       shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
       shadowMap_(context, options.shadowMapSize),
-      scene_(context, options.framesInFlight, pool_, shadowMap_, options.target, !options.pointSampledGround),
+      groundSunlight_(context, shadowMap_),
+      scene_(context, options.framesInFlight, pool_, shadowMap_, groundSunlight_, options.target,
+             {!options.pointSampledGround, !options.perPixelGroundShadows}),
       draw_(context, pool_, buffers_, lists_, scene_.setLayout(), options.target),
       method_(createMethod(options.method)),
       impostorSettings_(options.impostorSettings),
@@ -204,7 +206,10 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
     }
     if (impostorRaster_ || meshPathOn_[slot]) gpu::passDone(passes_, cmd, "raster");
     if (impostorDraw_) impostorDraw_->recordDraws(cmd);
-    if (!shadows_ && !shadowMapReady_) shadowMap_.clear(cmd);  // sampled by no one, but bound: a valid layout
+    if (!shadows_ && !shadowMapReady_) {  // sampled by no one, but bound: a valid layout
+        shadowMap_.clear(cmd);
+        groundSunlight_.recordAllLit(cmd);
+    }
     shadowMapReady_ = shadowMapReady_ || !shadows_;
     updateUniforms(slot, view);
     stages_[slot] = Stage::Computed;
@@ -253,17 +258,21 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
     const render::Camera camera = render::cameraOf(views_[slot]);
     const bool compute = rastersShadowsInCompute();
-    if (compute) shadowRaster_->rasterize(cmd, method_->skinnedVertices(), lightOf(views_[slot]));
-    shadowMap_.beginRendering(cmd);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
-    if (compute)
-        shadowRaster_->resolve(cmd);
-    else
+    if (compute) {
+        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), lightOf(views_[slot]));
+        shadowRaster_->beginMapRendering(cmd);
+    } else {
+        shadowMap_.beginRendering(cmd);
         draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
                      render::CharacterDraw::Target::ShadowMap);
+    }
     // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
     if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push, impostorBlend_);
     shadowMap_.endRendering(cmd);
+    const gpu::SceneUniforms scene = render::makeSceneUniforms(glm::mat4(1.0f), {}, {}, 0.0f, lightOf(views_[slot]), true,
+                                                               shadowMap_.size());
+    groundSunlight_.record(cmd, scene.lightViewProjection, scene.shadow.y, scene.shadow.z);
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
     gpu::passDone(passes_, cmd, "shadow");
@@ -393,7 +402,8 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
                                            {"clip library (GPU animation)", animationPass_.libraryBytes()},
                                            {"motion segments (GPU animation)", animationPass_.segmentBytes()},
                                            {"culling lists and draw commands", lists_.bytes()},
-                                           {"shadow map", shadowMap_.bytes()}};
+                                           {"shadow map", shadowMap_.bytes()},
+                                           {"ground sunlight (shadow map on the ground)", groundSunlight_.bytes()}};
     if (shadowRaster_) items.push_back({"shadow map depth (compute raster)", shadowRaster_->bytes()});
     if (eventPass_) items.push_back({"event buffer, clip events, previous segments", eventPass_->bytes()});
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
@@ -416,6 +426,7 @@ std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
     const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
+                                             groundSunlight_.bytes() +
                                              (shadowRaster_ ? shadowRaster_->bytes() : 0u) +
                                              (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms +
                                              (eventPass_ ? eventPass_->bytes() - eventPass_->characterBytes() : 0u));

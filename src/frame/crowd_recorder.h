@@ -32,6 +32,7 @@
 #include "render/event_pass.h"
 #include "render/frame_view.h"
 #include "render/geometry_pool.h"
+#include "render/ground_sunlight.h"
 #include "render/impostor_atlas.h"
 #include "render/impostor_draw.h"
 #include "render/impostor_raster.h"
@@ -63,6 +64,9 @@ struct RecorderOptions {
     // Tests: the ground's tiles point-sampled, as before they were filtered (issue 19), to measure
     // what filtering them gains.
     bool pointSampledGround = false;
+    // Tests: the ground's sunlight from nine shadow-map comparisons per pixel, as before the ground
+    // sunlight image (render/ground_sunlight.h), the reference its pictures are compared with.
+    bool perPixelGroundShadows = false;
     // With impostors on at construction (cull.impostors), the most characters drawn at a mesh level
     // (LOD 0-2) in a frame: skinned vertices, visible lists and draws are sized for it, and culling
     // demotes the characters beyond it to impostors. 0, or a crowd no larger: no cap.
@@ -231,6 +235,7 @@ private:
     std::uint32_t maxTargetDimension_;
     render::CrowdShape shape_;
     render::ShadowMap shadowMap_;
+    render::GroundSunlight groundSunlight_;  // the shadow map's comparisons on the ground, per texel
     render::ScenePass scene_;
     render::CharacterDraw draw_;
     std::unique_ptr<skin::SkinningMethod> method_;

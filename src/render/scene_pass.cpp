@@ -9,24 +9,27 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/geometry_pool.h"
+#include "render/ground_sunlight.h"
 #include "render/shadow_map.h"
 
 namespace render {
 
 ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-                     const ShadowMap& shadowMap, const TargetFormat& target, bool filteredGround)
+                     const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TargetFormat& target,
+                     GroundOptions ground)
     : context_(context) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    const VkDescriptorSetLayoutBinding bindings[4] = {
+    const VkDescriptorSetLayoutBinding bindings[5] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
         {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_TEXTURES, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
     setLayout_ = gpu::createSetLayout(context, bindings);
     // One set per frame in flight seen from the camera, then one per frame seen from the light.
     const std::uint32_t sets = 2 * framesInFlight;
     const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets},
-                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets * (MAX_TEXTURES + 1)},
+                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets * (MAX_TEXTURES + 2)},
                                            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sets}};
     pool_ = gpu::createDescriptorPool(context, sizes, sets);
     for (std::uint32_t i = 0; i < sets; ++i) {
@@ -38,7 +41,8 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         writeTextures(sets_.back(), pool);
         gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                    pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
-        writeShadowMap(sets_.back(), shadowMap);
+        writeImage(sets_.back(), 3, shadowMap.sampler(), shadowMap.view());
+        writeImage(sets_.back(), 4, groundSunlight.sampler(), groundSunlight.view());
     }
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ScenePush)};
     groundLayout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
@@ -48,7 +52,7 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
     desc.colorFormats = {target.color};
     desc.depthFormat = target.depth;
     desc.samples = target.samples;
-    desc.fragmentConstants = {filteredGround ? 1u : 0u};
+    desc.fragmentConstants = {ground.filteredTiles ? 1u : 0u, ground.sunlightImage ? 1u : 0u};
     desc.layout = groundLayout_;
     desc.cullMode = VK_CULL_MODE_NONE;
     groundPipeline_ = gpu::createGraphicsPipeline(context, desc);
@@ -84,11 +88,11 @@ void ScenePass::updateLight(std::uint32_t frameSlot, const gpu::SceneUniforms& u
     std::memcpy(uniforms_[uniforms_.size() / 2 + frameSlot].mapped, &uniforms, sizeof uniforms);
 }
 
-void ScenePass::writeShadowMap(VkDescriptorSet set, const ShadowMap& shadowMap) const {
-    const VkDescriptorImageInfo image{shadowMap.sampler(), shadowMap.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+void ScenePass::writeImage(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler, VkImageView view) const {
+    const VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = set;
-    write.dstBinding = 3;
+    write.dstBinding = binding;
     write.descriptorCount = 1;
     write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     write.pImageInfo = &image;

@@ -17,6 +17,7 @@ namespace gpu { class VulkanContext; }
 namespace render {
 
 class GeometryPool;
+class GroundSunlight;
 class ShadowMap;
 
 // The clear colour behind everything and the colour distant things fade into (linear RGB).
@@ -28,12 +29,17 @@ struct ScenePush {
     glm::vec4 groundArea;  // x, z: centre, w: half extent
 };
 
+// How the ground is drawn; the defaults are the renderer's, the others references for tests.
+struct GroundOptions {
+    bool filteredTiles = true;  // the tiles integrated over each pixel's footprint (false: point-sampled)
+    bool sunlightImage = true;  // the ground sunlight image (false: nine shadow-map comparisons a pixel)
+};
+
 class ScenePass {
 public:
-    // `filteredGround`: the tiles integrated over each pixel's footprint (false: point-sampled, the
-    // moiré the filter removes; tests compare the two).
     ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-              const ShadowMap& shadowMap, const TargetFormat& target, bool filteredGround = true);
+              const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TargetFormat& target,
+              GroundOptions ground = {});
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;
@@ -48,7 +54,7 @@ public:
 
 private:
     void writeTextures(VkDescriptorSet set, const GeometryPool& pool) const;
-    void writeShadowMap(VkDescriptorSet set, const ShadowMap& shadowMap) const;
+    void writeImage(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler, VkImageView view) const;
 
     const gpu::VulkanContext& context_;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;

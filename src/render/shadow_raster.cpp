@@ -12,8 +12,6 @@
 #include "render/geometry_pool.h"
 #include "render/shadow_map.h"
 #include "shadow_raster.comp.spv.h"
-#include "shadow_resolve.frag.spv.h"
-#include "shadow_resolve.vert.spv.h"
 
 namespace render {
 namespace {
@@ -35,42 +33,21 @@ constexpr gpu::Access kComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
 
 ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const DrawLists& lists,
                            const ShadowMap& map)
-    : context_(context), pool_(pool), lists_(lists), size_(map.size()) {
-    try {
-        depth_ = gpu::createBuffer(context, VkDeviceSize{size_} * size_ * 4,
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                   gpu::MemoryUse::DeviceLocal, "shadow map depth (compute raster)");
-        const gpu::BufferBinding resolveBindings[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, depth_.buffer}};
-        resolveSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_FRAGMENT_BIT, resolveBindings);
-        const VkPushConstantRange resolvePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(std::uint32_t)};
-        const VkDescriptorSetLayout resolveSets[] = {resolveSet_->layout()};
-        resolveLayout_ = gpu::createPipelineLayout(context, resolveSets, {&resolvePush, 1});
-        gpu::GraphicsPipelineDesc desc;
-        desc.vertexShader = shadow_resolve_vert_spv;
-        desc.fragmentShader = shadow_resolve_frag_spv;
-        desc.depthFormat = kShadowFormat;
-        desc.cullMode = VK_CULL_MODE_NONE;
-        desc.layout = resolveLayout_;
-        resolvePipeline_ = gpu::createGraphicsPipeline(context, desc);
-    } catch (...) {
-        release();
-        throw;
-    }
+    : context_(context), pool_(pool), lists_(lists), map_(map), size_(map.size()) {
+    depth_ = gpu::createBuffer(context, VkDeviceSize{size_} * size_ * 4,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                               gpu::MemoryUse::DeviceLocal, "shadow map depth (compute raster)");
 }
 
 ShadowRaster::~ShadowRaster() { release(); }
 
 void ShadowRaster::release() {
-    for (VkPipeline* pipeline : {&rasterPipeline_, &resolvePipeline_}) {
-        if (*pipeline) vkDestroyPipeline(context_.device, *pipeline, nullptr);
-        *pipeline = VK_NULL_HANDLE;
-    }
-    for (VkPipelineLayout* layout : {&rasterLayout_, &resolveLayout_}) {
-        if (*layout) vkDestroyPipelineLayout(context_.device, *layout, nullptr);
-        *layout = VK_NULL_HANDLE;
-    }
+    if (rasterPipeline_) vkDestroyPipeline(context_.device, rasterPipeline_, nullptr);
+    if (rasterLayout_) vkDestroyPipelineLayout(context_.device, rasterLayout_, nullptr);
+    rasterPipeline_ = VK_NULL_HANDLE;
+    rasterLayout_ = VK_NULL_HANDLE;
     rasterSet_.reset();
-    resolveSet_.reset();
     gpu::destroyBuffer(context_, depth_);
 }
 
@@ -100,8 +77,8 @@ void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
 
 void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection) {
     bindVertices(vertices);
-    // The previous frame's resolve read the buffer: done before it is cleared.
-    gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0},
+    // The previous frame's copy into the map read the buffer: done before it is cleared.
+    gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
                        {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     vkCmdFillBuffer(cmd, depth_.buffer, 0, VK_WHOLE_SIZE, kFarDepthBits);
     gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
@@ -119,15 +96,9 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, 1);
     gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite,
-                       {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+                       {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
 }
 
-void ShadowRaster::resolve(VkCommandBuffer cmd) const {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolvePipeline_);
-    const VkDescriptorSet set = resolveSet_->set();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolveLayout_, 0, 1, &set, 0, nullptr);
-    vkCmdPushConstants(cmd, resolveLayout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof size_, &size_);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
-}
+void ShadowRaster::beginMapRendering(VkCommandBuffer cmd) const { map_.beginRenderingOver(cmd, depth_.buffer); }
 
 }  // namespace render

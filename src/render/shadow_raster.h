@@ -2,8 +2,8 @@
 // The shadow map's mesh casters rasterized in compute instead of by the graphics pipeline (issue 18,
 // "the raster wall": on the H100 the hardware rasterizer is a small graphics slice, compute is every
 // SM). A depth-only map needs no more than a 32-bit atomic min per texel: the casters' triangles go to
-// a buffer of depth bits (shaders/shadow_raster.comp.glsl), which a full-screen pass then writes into
-// the shadow map's depth image, where the impostor casters are drawn over it as before. The map is
+// a buffer of depth bits (shaders/shadow_raster.comp.glsl), which is copied into the shadow map's depth
+// image, where the impostor casters are drawn over it as before. The map is
 // the hardware pass's texel for texel but for rounding on triangle edges (tests/test_shadow_raster.cpp).
 // Only for methods whose skinned vertices are in a buffer (not the `vs` baseline, which skins while
 // it draws), and only when that buffer's position stream fits one storage binding.
@@ -46,8 +46,9 @@ public:
     void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection);
     // The skinned vertices' buffer is going away (a method switch): bind the next one afresh.
     void forgetVertices() { boundVertices_ = VK_NULL_HANDLE; }
-    // Inside the shadow map's rendering pass: writes the rasterized depth into the map.
-    void resolve(VkCommandBuffer cmd) const;
+    // After rasterize: copies the rasterized depth into the map and begins the map's rendering pass
+    // over it (for the impostor casters; ShadowMap::endRendering ends it).
+    void beginMapRendering(VkCommandBuffer cmd) const;
     VkDeviceSize bytes() const { return depth_.size; }
 
 private:
@@ -57,15 +58,13 @@ private:
     const gpu::VulkanContext& context_;
     const GeometryPool& pool_;
     const DrawLists& lists_;
+    const ShadowMap& map_;
     std::uint32_t size_ = 0;
     gpu::Buffer depth_;
     VkBuffer boundVertices_ = VK_NULL_HANDLE;
     std::unique_ptr<gpu::DescriptorBundle> rasterSet_;
-    std::unique_ptr<gpu::DescriptorBundle> resolveSet_;
     VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
-    VkPipelineLayout resolveLayout_ = VK_NULL_HANDLE;
     VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
-    VkPipeline resolvePipeline_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render

@@ -1,0 +1,172 @@
+#include "render/ground_sunlight.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "ground_sunlight.comp.spv.h"
+#include "gpu/barriers.h"
+#include "gpu/buffer.h"
+#include "gpu/pipeline.h"
+#include "gpu/vulkan_context.h"
+#include "gpu/vulkan_error.h"
+#include "render/shadow_map.h"
+
+namespace render {
+namespace {
+
+// RGBA8, not R8: rgba8 is a storage format every device has; r8 needs shaderStorageImageExtendedFormats,
+// a feature the host would have to enable on the device it lends.
+constexpr VkFormat kFormat = VK_FORMAT_R8G8B8A8_UNORM;
+
+struct Push {
+    glm::mat4 lightViewProjection;
+    glm::vec4 shadow;
+};
+
+VkImageView createView(const gpu::VulkanContext& context, VkImage image, std::uint32_t firstLevel,
+                       std::uint32_t levels) {
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image;
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = kFormat;
+    info.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, firstLevel, levels, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(context.device, &info, nullptr, &view));
+    return view;
+}
+
+void writeImage(const gpu::VulkanContext& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
+                VkSampler sampler, VkImageView view, VkImageLayout layout) {
+    const VkDescriptorImageInfo image{sampler, view, layout};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = type;
+    write.pImageInfo = &image;
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+}
+
+}  // namespace
+
+GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMap& map)
+    : context_(context), size_(map.size()), levels_(static_cast<std::uint32_t>(std::bit_width(map.size()))) {
+    try {
+        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        info.imageType = VK_IMAGE_TYPE_2D;
+        info.format = kFormat;
+        info.extent = {size_, size_, 1};
+        info.mipLevels = levels_;
+        info.arrayLayers = 1;
+        info.samples = VK_SAMPLE_COUNT_1_BIT;
+        info.tiling = VK_IMAGE_TILING_OPTIMAL;
+        info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        VK_CHECK(vkCreateImage(context.device, &info, nullptr, &image_));
+        VkMemoryRequirements requirements;
+        vkGetImageMemoryRequirements(context.device, image_, &requirements);
+        bytes_ = requirements.size;
+        memory_ = gpu::allocateMemory(context, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "ground sunlight");
+        VK_CHECK(vkBindImageMemory(context.device, image_, memory_, 0));
+        view_ = createView(context, image_, 0, levels_);
+        for (std::uint32_t level = 0; level < levels_; ++level) levelViews_.push_back(createView(context, image_, level, 1));
+
+        VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+        samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_LINEAR;
+        samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+        samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        samplerInfo.maxLod = static_cast<float>(levels_ - 1);
+        VK_CHECK(vkCreateSampler(context.device, &samplerInfo, nullptr, &sampler_));
+
+        const VkDescriptorSetLayoutBinding bindings[3] = {
+            {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+            {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+            {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
+        setLayout_ = gpu::createSetLayout(context, bindings);
+        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, levels_},
+                                               {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2 * levels_}};
+        pool_ = gpu::createDescriptorPool(context, sizes, levels_);
+        for (std::uint32_t level = 0; level < levels_; ++level) {
+            const VkDescriptorSet set = gpu::allocateSet(context, pool_, setLayout_);
+            writeImage(context, set, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(), map.view(),
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            // Level 0 reads no level below; its binding holds its own view, never loaded.
+            writeImage(context, set, 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
+                       levelViews_[level == 0 ? 0 : level - 1], VK_IMAGE_LAYOUT_GENERAL);
+            writeImage(context, set, 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE, levelViews_[level],
+                       VK_IMAGE_LAYOUT_GENERAL);
+            sets_.push_back(set);
+        }
+        const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
+        layout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
+        const std::uint32_t first[] = {1u}, higher[] = {0u};
+        firstLevel_ = gpu::createComputePipeline(context, ground_sunlight_comp_spv, layout_, first);
+        higherLevel_ = gpu::createComputePipeline(context, ground_sunlight_comp_spv, layout_, higher);
+    } catch (...) {
+        release();
+        throw;
+    }
+    context.setDebugName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(image_), "ground sunlight");
+}
+
+GroundSunlight::~GroundSunlight() { release(); }
+
+void GroundSunlight::release() {
+    for (VkPipeline pipeline : {firstLevel_, higherLevel_})
+        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
+    if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
+    if (pool_) vkDestroyDescriptorPool(context_.device, pool_, nullptr);
+    if (setLayout_) vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
+    if (sampler_) vkDestroySampler(context_.device, sampler_, nullptr);
+    for (VkImageView view : levelViews_) vkDestroyImageView(context_.device, view, nullptr);
+    if (view_) vkDestroyImageView(context_.device, view_, nullptr);
+    if (image_) vkDestroyImage(context_.device, image_, nullptr);
+    if (memory_) vkFreeMemory(context_.device, memory_, nullptr);
+    firstLevel_ = higherLevel_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
+    pool_ = VK_NULL_HANDLE;
+    setLayout_ = VK_NULL_HANDLE;
+    sampler_ = VK_NULL_HANDLE;
+    levelViews_.clear();
+    view_ = VK_NULL_HANDLE;
+    image_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+}
+
+void GroundSunlight::record(VkCommandBuffer cmd, const glm::mat4& lightViewProjection, float depthBias,
+                            float texel) const {
+    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1};
+    constexpr gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+    // The previous frame's ground must be done sampling before the levels are written again (and read:
+    // level 0's dispatch binds a level below too, which it never loads).
+    gpu::imageBarrier(cmd, image_, all, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0},
+                      {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+    const Push push{lightViewProjection, glm::vec4(0.0f, depthBias, texel, 0.0f)};
+    for (std::uint32_t level = 0; level < levels_; ++level) {
+        if (level > 0)  // the level below is written before this one reads it
+            gpu::memoryBarrier(cmd, computeWrite, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, level == 0 ? firstLevel_ : higherLevel_);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[level], 0, nullptr);
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        const std::uint32_t side = std::max(size_ >> level, 1u);
+        vkCmdDispatch(cmd, (side + 7) / 8, (side + 7) / 8, 1);
+    }
+    gpu::imageBarrier(cmd, image_, all, computeWrite,
+                      {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
+                      VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+void GroundSunlight::recordAllLit(VkCommandBuffer cmd) const {
+    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1};
+    constexpr gpu::Access clearWrite{VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    gpu::imageBarrier(cmd, image_, all, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0}, clearWrite,
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    const VkClearColorValue lit{{1.0f, 1.0f, 1.0f, 1.0f}};
+    vkCmdClearColorImage(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &lit, 1, &all);
+    gpu::imageBarrier(cmd, image_, all, clearWrite,
+                      {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+}  // namespace render
