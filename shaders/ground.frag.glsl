@@ -10,7 +10,7 @@ layout(location = 0) in vec3 inWorld;
 layout(location = 0) out vec4 outColor;
 // Off only in tests, which measure what the filter gains against the tiles point-sampled.
 layout(constant_id = 0) const bool kFilteredTiles = true;
-// Off only in tests: the sunlight from nine shadow-map comparisons a pixel, the reference.
+// Off only in tests: the sunlight from the shadow map's comparisons at each pixel, the reference.
 layout(constant_id = 1) const bool kSunlightImage = true;
 // The shadow map's comparisons on the ground, per map texel, mipmapped (render/ground_sunlight.h).
 layout(set = 0, binding = 4) uniform sampler2D groundSunlight;

@@ -4,7 +4,7 @@
 // that cost what they show"). The ground is the plane y = 0 and the light's projection is orthographic,
 // so each texel centre of the map sees exactly one ground point: its filtered comparison is computed
 // here, in compute, and the ground's fragment shader takes one trilinear fetch of the result where it
-// took nine comparisons (on the H100 fragment work runs on a small graphics slice; this pass runs on
+// made its comparisons (on the H100 fragment work runs on a small graphics slice; this pass runs on
 // every SM). Level 0 holds the comparisons; each higher level the mean of 2x2 texels of the one below,
 // so the far ground, where a texel is smaller than a pixel, averages its shadows instead of aliasing.
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -1,9 +1,9 @@
 // The ground's sunlight from the ground sunlight image (render/ground_sunlight.h: the shadow map's
 // comparisons made once per map texel in compute, fetched once per pixel, trilinearly) against what it
-// replaces, nine comparisons per pixel in the ground's fragment shader, both measured against a 4x4
+// replaces, the shadow map's comparisons at each pixel in the ground's fragment shader, both measured against a 4x4
 // supersampled render of the latter: the same shadows in the same places, for a group of walking
 // soldiers seen from above. Where a map texel is smaller than a pixel the image's levels average the
-// shadows, which the nine comparisons at the pixel centre do not, so it may only be closer.
+// shadows, which the comparisons at the pixel centre do not, so it may only be closer.
 #include <algorithm>
 #include <cstdio>
 #include <vector>
@@ -66,7 +66,7 @@ double overlap(const std::vector<bool>& a, const std::vector<bool>& b) {
 
 }  // namespace
 
-TEST_F(GpuTest, GroundSunlightImageIsAsCloseToTheSupersampledShadowsAsNineComparisonsAPixel) {
+TEST_F(GpuTest, GroundSunlightImageIsAsCloseToTheSupersampledShadowsAsComparisonsAtEachPixel) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     constexpr VkExtent2D size{320, 180};
     const app::Rgba8Image image = renderGroup(*context, soldier, Ground::SunlightImage, size);
@@ -84,7 +84,7 @@ TEST_F(GpuTest, GroundSunlightImageIsAsCloseToTheSupersampledShadowsAsNineCompar
     const double perPixelPsnr = app::compareImages(perPixel, supersampled).psnr;
     const double unshadowedPsnr = app::compareImages(unshadowed, supersampled).psnr;
     std::printf("against the 4x4 supersampled render (%zu shadowed pixels): sunlight image %.2f dB, overlap %.3f; "
-                "nine comparisons a pixel %.2f dB, overlap %.3f; no shadows %.2f dB\n",
+                "comparisons at each pixel %.2f dB, overlap %.3f; no shadows %.2f dB\n",
                 shadowed, imagePsnr, imageOverlap, perPixelPsnr, perPixelOverlap, unshadowedPsnr);
     EXPECT_GT(imageOverlap, perPixelOverlap - 0.02) << "the shadows fall where the reference's fall";
     EXPECT_GT(imagePsnr, perPixelPsnr - 0.25);

@@ -261,7 +261,11 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     if (compute) {
         shadowRaster_->rasterize(cmd, method_->skinnedVertices(), lightOf(views_[slot]));
-        shadowRaster_->beginMapRendering(cmd);
+        shadowMap_.copyFrom(cmd, shadowRaster_->depth());
+        if (impostorDraw_)
+            shadowMap_.beginRenderingOver(cmd);
+        else
+            shadowMap_.copyDone(cmd);  // no casters left to draw: no rendering pass at all
     } else {
         shadowMap_.beginRendering(cmd);
         draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
@@ -269,10 +273,9 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     }
     // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
     if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push, impostorBlend_);
-    shadowMap_.endRendering(cmd);
-    const gpu::SceneUniforms scene = render::makeSceneUniforms(glm::mat4(1.0f), {}, {}, 0.0f, lightOf(views_[slot]), true,
-                                                               shadowMap_.size());
-    groundSunlight_.record(cmd, scene.lightViewProjection, scene.shadow.y, scene.shadow.z);
+    if (!compute || impostorDraw_) shadowMap_.endRendering(cmd);
+    // The ground's sunlight from the finished map, in compute, for the ground's one fetch a pixel.
+    groundSunlight_.record(cmd, lightOf(views_[slot]), render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()));
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
     gpu::passDone(passes_, cmd, "shadow");

@@ -112,7 +112,7 @@ gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std:
                                      const glm::mat4& lightViewProjection, bool shadows, std::uint32_t shadowMapSize) {
     gpu::SceneUniforms u{};
     u.lightViewProjection = lightViewProjection;
-    u.shadow = glm::vec4(shadows ? 1.0f : 0.0f, 0.0015f, 1.0f / static_cast<float>(shadowMapSize), 0.0f);
+    u.shadow = glm::vec4(shadows ? 1.0f : 0.0f, kShadowDepthBias, 1.0f / static_cast<float>(shadowMapSize), 0.0f);
     u.materialFlags = texturedMaterials;
     u.viewProjection = viewProjection;
     u.lightDirection = glm::vec4(lightDirection(), 0.35f);

@@ -23,6 +23,10 @@ class ShadowMap;
 // The clear colour behind everything and the colour distant things fade into (linear RGB).
 inline constexpr glm::vec3 kSkyColor{0.55f, 0.7f, 0.9f};
 
+// What the shading subtracts from a point's depth in the light before comparing it with the shadow map
+// (SceneUniforms::shadow.y): against acne on lit surfaces.
+inline constexpr float kShadowDepthBias = 0.0015f;
+
 // Push constants of the ground and draw fragment shaders.
 struct ScenePush {
     glm::vec4 cameraPosition;

@@ -97,17 +97,29 @@ void ShadowMap::beginRendering(VkCommandBuffer cmd) const {
     beginDepthRendering(cmd, image_, VK_ATTACHMENT_LOAD_OP_CLEAR);
 }
 
-void ShadowMap::beginRenderingOver(VkCommandBuffer cmd, VkBuffer depthBits) const {
-    constexpr gpu::Access copyWrite{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
-    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT, {kSamplers, 0}, copyWrite,
+namespace {
+constexpr gpu::Access kCopyWrite{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+}  // namespace
+
+void ShadowMap::copyFrom(VkCommandBuffer cmd, VkBuffer depthBits) const {
+    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT, {kSamplers, 0}, kCopyWrite,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
     region.imageExtent = {image_.extent.width, image_.extent.height, 1};
     vkCmdCopyBufferToImage(cmd, depthBits, image_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT, copyWrite, kDepthAttachment,
+}
+
+void ShadowMap::beginRenderingOver(VkCommandBuffer cmd) const {
+    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT, kCopyWrite, kDepthAttachment,
                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
     beginDepthRendering(cmd, image_, VK_ATTACHMENT_LOAD_OP_LOAD);
+}
+
+void ShadowMap::copyDone(VkCommandBuffer cmd) const {
+    gpu::imageBarrier(cmd, image_.image, VK_IMAGE_ASPECT_DEPTH_BIT, kCopyWrite,
+                      {kSamplers, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT}, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 }
 
 void ShadowMap::endRendering(VkCommandBuffer cmd) const {

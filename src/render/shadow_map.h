@@ -40,10 +40,14 @@ public:
     VkDeviceSize bytes() const { return image_.bytes; }
     // Begins depth-only rendering into the map, cleared to the far plane.
     void beginRendering(VkCommandBuffer cmd) const;
-    // Copies a compute rasterizer's depth (one 32-bit float per texel, row-major) into the map, then
-    // begins depth-only rendering over it (the impostor casters are drawn on top). A copy, not a
-    // full-screen pass writing gl_FragDepth: on the H100 that pass ran on the small graphics slice.
-    void beginRenderingOver(VkCommandBuffer cmd, VkBuffer depthBits) const;
+    // Copies a compute rasterizer's depth (one 32-bit float per texel, row-major) into the map: a copy,
+    // not a full-screen pass writing gl_FragDepth, which on the H100 ran on the small graphics slice.
+    // Then either beginRenderingOver (casters to draw on top) or copyDone (none).
+    void copyFrom(VkCommandBuffer cmd, VkBuffer depthBits) const;
+    // After copyFrom: begins depth-only rendering over the copied depth.
+    void beginRenderingOver(VkCommandBuffer cmd) const;
+    // After copyFrom, with nothing to draw on top: leaves the map ready to sample.
+    void copyDone(VkCommandBuffer cmd) const;
     // Ends it and leaves the map ready for the fragment shaders to sample.
     void endRendering(VkCommandBuffer cmd) const;
     // Leaves a map that was never rendered ready to sample (shadows off: cleared, so all lit).

@@ -33,7 +33,7 @@ constexpr gpu::Access kComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
 
 ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const DrawLists& lists,
                            const ShadowMap& map)
-    : context_(context), pool_(pool), lists_(lists), map_(map), size_(map.size()) {
+    : context_(context), pool_(pool), lists_(lists), size_(map.size()) {
     depth_ = gpu::createBuffer(context, VkDeviceSize{size_} * size_ * 4,
                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -98,7 +98,5 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite,
                        {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
 }
-
-void ShadowRaster::beginMapRendering(VkCommandBuffer cmd) const { map_.beginRenderingOver(cmd, depth_.buffer); }
 
 }  // namespace render

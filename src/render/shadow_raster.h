@@ -46,9 +46,8 @@ public:
     void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection);
     // The skinned vertices' buffer is going away (a method switch): bind the next one afresh.
     void forgetVertices() { boundVertices_ = VK_NULL_HANDLE; }
-    // After rasterize: copies the rasterized depth into the map and begins the map's rendering pass
-    // over it (for the impostor casters; ShadowMap::endRendering ends it).
-    void beginMapRendering(VkCommandBuffer cmd) const;
+    // The rasterized depth, one float per map texel (ShadowMap::copyFrom takes it into the map).
+    VkBuffer depth() const { return depth_.buffer; }
     VkDeviceSize bytes() const { return depth_.size; }
 
 private:
@@ -58,7 +57,6 @@ private:
     const gpu::VulkanContext& context_;
     const GeometryPool& pool_;
     const DrawLists& lists_;
-    const ShadowMap& map_;
     std::uint32_t size_ = 0;
     gpu::Buffer depth_;
     VkBuffer boundVertices_ = VK_NULL_HANDLE;
