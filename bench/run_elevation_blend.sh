@@ -13,7 +13,7 @@
 # .devbin-bands and give BINS=".devbin-bands .devbin": its blend on is the four-cell blend.
 # Expects the Vulkan loader packages in .gl/ (carried).
 #   on the H100:      bash bench/run_elevation_blend.sh
-#   here on lavapipe: DEVICE= COUNT=20000 SIZE=480x270 FRAMES=3 WARMUP=1 bash bench/run_elevation_blend.sh
+#   here on lavapipe: DEVICE= COUNT=8000 SIZE=480x270 FRAMES=3 WARMUP=1 bash bench/run_elevation_blend.sh
 # FRAMES (default 300) and WARMUP (30): crowd-bench's --frames and --warmup; COUNT (1000000); SIZE
 # (1920x1080); DEVICE (NVIDIA): part of the device's name, empty for the first device.
 set -uo pipefail
@@ -57,7 +57,7 @@ passes="gpu_total_ms gpu_cull_ms gpu_shadow_ms gpu_raster_ms gpu_draw_ms"
   echo "compute impostors' resolve); +%: against --impostor-blend off of the same build, rasterizer and round"
   echo "($(csv_value "$res/bench-0-compute-off-1.csv" pass_clock))"
   printf "%-14s %-8s %-5s %1s | %8s" build raster blend r frame
-  for p in $passes; do printf " | %8s %7s" "${p#gpu_}" "+%"; done
+  for p in $passes; do p=${p#gpu_}; printf " | %8s %7s" "${p%_ms}" "+%"; done
   echo
   for round in 1 2; do
     for b in "${!bins[@]}"; do
