@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// An impostor's pixel: the atlas's albedo and model-space normal blended over four cells
+// An impostor's pixel: the atlas's albedo and model-space normal blended over eight cells (four where
+// the elevation band's share is 0)
 // (impostor_sample.glsl.inc; coverage-weighted, so divided by the blended coverage), the normal turned by the heading, and the same lighting as the mesh (shade()), so the
 // switch from mesh to impostor keeps the character's brightness. Single-sampled, texels under half
 // coverage are cut; multisampled, the coverage goes out as alpha and the pipeline's alpha to coverage
@@ -9,6 +10,7 @@
 // The lighting is impostor_shade.glsl.inc's, shared with the compute rasterizer's resolve.
 #include "gpu_types.h"
 #include "shading.glsl.inc"
+#include "impostor_cell.glsl.inc"
 #include "impostor_sample.glsl.inc"
 #include "fade_dither.glsl.inc"
 #include "impostor_shade.glsl.inc"
@@ -18,7 +20,7 @@ layout(set = 2, binding = 0) uniform sampler2DArray atlasAlbedo;
 layout(set = 2, binding = 1) uniform sampler2DArray atlasNormal;
 layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(constant_id = 0) const bool kAlphaToCoverage = false;
-layout(constant_id = 1) const bool kBlend = true;  // impostor-blend: four cells, or the nearest one's texel
+layout(constant_id = 1) const bool kBlend = true;  // impostor-blend: the cells' blend, or the nearest one's texel
 
 layout(location = 0) in vec2 vLocal;
 layout(location = 1) flat in uvec4 vCells;
@@ -26,15 +28,17 @@ layout(location = 2) flat in vec3 vTint;
 layout(location = 3) flat in vec2 vHeading;
 layout(location = 4) in vec3 vWorld;
 layout(location = 5) flat in float vRadius;
-layout(location = 6) flat in vec2 vWeights;
+layout(location = 6) flat in vec3 vWeights;
 layout(location = 7) flat in uvec2 vGrid;
 layout(location = 8) flat in float vFadeShare;
+layout(location = 9) flat in uint vBandStep;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec4 albedo = impostorTexel(atlasAlbedo, kBlend, vCells, vWeights, vGrid, vLocal);
+    const ImpostorBlend cells = ImpostorBlend(vCells, vBandStep, vWeights);
+    vec4 albedo = impostorTexel(atlasAlbedo, kBlend, cells, vGrid, vLocal);
     if (albedo.a < (kAlphaToCoverage ? 1.0 / 255.0 : 0.5)) discard;  // (nothing covered: no depth either)
-    vec3 lit = impostorShade(scene, atlasNormal, kBlend, vCells, vWeights, vGrid, vLocal, albedo, vTint, vHeading, vWorld,
+    vec3 lit = impostorShade(scene, atlasNormal, kBlend, cells, vGrid, vLocal, albedo, vTint, vHeading, vWorld,
                              vRadius, cameraPosition.xyz);
     // Fading from its last mesh level (which draws the other pixels): the coarser level's share. After
     // the texture reads, which need their neighbours' places for derivatives.

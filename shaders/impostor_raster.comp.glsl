@@ -86,7 +86,7 @@ void drawPixels(uint index, Footprint f, uint start, uint stride) {
         ImpostorPixel pixel = impostorPixel(f.clip, vec2(at), raster.viewport.xy);
         if (!pixel.inside) continue;
         impostorUseGradients(pixel, f.quad.grid);
-        if (impostorTexel(atlasAlbedo, blend, f.quad.blend.cells, f.quad.blend.weights, f.quad.grid, pixel.local).a < 0.5)
+        if (impostorTexel(atlasAlbedo, blend, f.quad.blend, f.quad.grid, pixel.local).a < 0.5)
             continue;
         uint64_t word = (uint64_t(floatBitsToUint(pixel.depth)) << 32) | uint64_t(index);
         atomicMin(visibility[uint(at.y) * rowPitch + uint(at.x)], word);

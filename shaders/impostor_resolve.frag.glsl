@@ -22,7 +22,7 @@ layout(set = 2, binding = 0) uniform sampler2DArray atlasAlbedo;
 layout(set = 2, binding = 1) uniform sampler2DArray atlasNormal;
 layout(std430, set = 3, binding = 0) readonly buffer Visibility { uint64_t visibility[]; };
 layout(push_constant) uniform Push {
-    vec4 cameraPosition;  // xyz: the eye; w: 1 to blend four atlas cells, 0 the nearest (impostor-blend)
+    vec4 cameraPosition;  // xyz: the eye; w: 1 to blend the atlas cells, 0 the nearest (impostor-blend)
     vec4 viewport;  // xy: offset in the target, zw: extent (the visibility buffer's)
 };
 layout(location = 0) out vec4 outColor;
@@ -38,8 +38,8 @@ void main() {
     if (!blend) q.blend = impostorNearest(q.blend);
     ImpostorPixel p = impostorPixel(impostorQuadClip(q, scene.viewProjection), vec2(pixel), viewport.zw);
     impostorUseGradients(p, q.grid);
-    vec4 albedo = impostorTexel(atlasAlbedo, blend, q.blend.cells, q.blend.weights, q.grid, p.local);
-    outColor = vec4(impostorShade(scene, atlasNormal, blend, q.blend.cells, q.blend.weights, q.grid, p.local, albedo,
+    vec4 albedo = impostorTexel(atlasAlbedo, blend, q.blend, q.grid, p.local);
+    outColor = vec4(impostorShade(scene, atlasNormal, blend, q.blend, q.grid, p.local, albedo,
                                   character.tint.rgb, q.heading, impostorCorner(q, p.corner), q.halfSide,
                                   cameraPosition.xyz), 1.0);
     gl_FragDepth = uintBitsToFloat(depthBits);

@@ -70,7 +70,9 @@ TEST(ImpostorCell, BlendsTheTwoNearestViewsAndFrames) {
     EXPECT_EQ(b.cells[3], cell(1, 5, 1, 5));
     EXPECT_NEAR(b.weights.x, 5.0f / 22.5f, 1e-4f);
     EXPECT_NEAR(b.weights.y, 0.8f, 1e-4f);
-    EXPECT_NEAR(b.weight(0) + b.weight(1) + b.weight(2) + b.weight(3), 1.0f, 1e-6f);
+    float sum = 0.0f;
+    for (std::uint32_t i = 0; i < 8; ++i) sum += b.weight(i);
+    EXPECT_NEAR(sum, 1.0f, 1e-6f);
     const render::ImpostorBlend wrapped = render::impostorBlend(m, 2, 0.98f, direction(350, 10));
     EXPECT_EQ(wrapped.cells[0], cell(2, 15, 0, 15));
     EXPECT_EQ(wrapped.cells[3], cell(2, 0, 0, 0));
@@ -78,10 +80,59 @@ TEST(ImpostorCell, BlendsTheTwoNearestViewsAndFrames) {
         for (const float phase : {0.0f, 0.3f, 0.36f, 0.98f}) {
             const render::ImpostorBlend blend = render::impostorBlend(m, 1, phase, direction(azimuth, 40));
             std::uint32_t heaviest = 0;
-            for (std::uint32_t i = 1; i < 4; ++i) heaviest = blend.weight(i) > blend.weight(heaviest) ? i : heaviest;
-            EXPECT_EQ(blend.cells[heaviest], render::impostorCell(m, 1, phase, direction(azimuth, 40)))
+            for (std::uint32_t i = 1; i < 8; ++i) heaviest = blend.weight(i) > blend.weight(heaviest) ? i : heaviest;
+            EXPECT_EQ(blend.cell(heaviest), render::impostorCell(m, 1, phase, direction(azimuth, 40)))
                 << azimuth << " degrees, phase " << phase;
         }
+}
+
+// The elevation bands an impostor blends: the 4 bands of 22.5 degrees are captured at their middles
+// (11.25, 33.75, 56.25 and 78.75 degrees), and a view between two middles mixes those two bands by
+// nearness: 30 degrees lies (30 - 11.25) / 22.5 = 0.8333 of the way from band 0's middle to band 1's, 60
+// degrees (60 - 56.25) / 22.5 = 0.1667 of the way from band 2's to band 3's. Below the lowest middle
+// and above the highest the blend is clamped to that band (no step to another). The heaviest of the
+// eight cells is the nearest cell, and a band's weight changes continuously as the elevation rises.
+TEST(ImpostorCell, BlendsTheTwoNearestElevationBands) {
+    const gpu::ImpostorModel m = handModel();
+    auto cell = [](std::uint32_t clip, std::uint32_t frame, std::uint32_t band, std::uint32_t azimuth) {
+        return 100u + ((clip * 16 + frame) * 4 + band) * 16 + azimuth;
+    };
+    const render::ImpostorBlend at30 = render::impostorBlend(m, 1, 0.3f, direction(95, 30));
+    EXPECT_EQ(at30.cell(0), cell(1, 4, 0, 4));
+    EXPECT_EQ(at30.cell(3), cell(1, 5, 0, 5));
+    EXPECT_EQ(at30.cell(4), cell(1, 4, 1, 4));
+    EXPECT_EQ(at30.cell(7), cell(1, 5, 1, 5));
+    EXPECT_EQ(at30.bandStep, 16u);
+    EXPECT_NEAR(at30.weights.z, 0.8333f, 1e-4f);
+    // Cell (frame 5, azimuth 4) in band 1: (1 - 5/22.5) x 0.8 x 0.8333 = 0.5185.
+    EXPECT_NEAR(at30.weight(6), (1.0f - 5.0f / 22.5f) * 0.8f * 0.8333f, 1e-4f);
+    const render::ImpostorBlend at60 = render::impostorBlend(m, 0, 0.0f, direction(0, 60));
+    EXPECT_EQ(at60.cell(0), cell(0, 0, 2, 0));
+    EXPECT_EQ(at60.cell(4), cell(0, 0, 3, 0));
+    EXPECT_NEAR(at60.weights.z, 0.1667f, 1e-4f);
+    for (const float clamped : {5.0f, 11.0f, 79.0f, 85.0f, 90.0f}) {
+        const render::ImpostorBlend blend = render::impostorBlend(m, 0, 0.0f, direction(0, clamped));
+        EXPECT_EQ(blend.bandStep, 0u) << clamped << " degrees";
+        EXPECT_EQ(blend.weights.z, 0.0f) << clamped << " degrees";
+        EXPECT_EQ(blend.cell(0), cell(0, 0, clamped < 45.0f ? 0 : 3, 0)) << clamped << " degrees";
+    }
+    // Each band's share of the blend, rising from 0 to 90 degrees in steps of 0.1 degree: it moves by at
+    // most a step's share of a band (0.1 / 22.5) at a time, and the heaviest cell is the nearest cell.
+    float previous[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+    for (int k = 0; k <= 900; ++k) {
+        const float elevation = 0.1f * static_cast<float>(k);
+        const render::ImpostorBlend blend = render::impostorBlend(m, 2, 0.4f, direction(200, elevation));
+        float share[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (std::uint32_t i = 0; i < 8; ++i) share[((blend.cell(i) - 100u) / 16u) % 4u] += blend.weight(i);
+        for (int band = 0; band < 4; ++band) {
+            EXPECT_LE(std::abs(share[band] - previous[band]), 0.1f / 22.5f + 1e-4f) << elevation << " degrees, band " << band;
+            previous[band] = share[band];
+        }
+        // (On an exact tie the nearest cell is the upper step, as impostorNearest picks it: hence >=.)
+        std::uint32_t heaviest = 0;
+        for (std::uint32_t i = 1; i < 8; ++i) heaviest = blend.weight(i) >= blend.weight(heaviest) ? i : heaviest;
+        EXPECT_EQ(blend.cell(heaviest), render::impostorCell(m, 2, 0.4f, direction(200, elevation))) << elevation;
+    }
 }
 
 TEST(ImpostorCell, ThePoseIsTheDominantClipAtTheSharedPhase) {

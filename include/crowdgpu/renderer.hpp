@@ -121,8 +121,9 @@ struct RendererSettings {
     bool lodFade = true;
     bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
     float impostorThreshold = 32.0f;
-    // Impostors blend the two nearest views and the two nearest animation frames (four atlas cells);
-    // off: the nearest cell alone, cheaper (one texture fetch where four were) but stepping visibly.
+    // Impostors blend the two nearest views, elevation bands and animation frames (eight atlas cells,
+    // four where the view lies below the lowest band's middle or above the highest's); off: the nearest
+    // cell alone, cheaper (one texture fetch where up to eight were) but stepping visibly.
     bool impostorBlend = true;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)

@@ -54,7 +54,7 @@ struct RecorderOptions {
     render::AnimationPath animation = render::AnimationPath::Gpu;
     render::CullSettings cull;
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
-    // Impostors blend the four nearest cells (views and frames; docs/impostors.md), or show the nearest.
+    // Impostors blend the nearest cells (views, elevation bands and frames; docs/impostors.md), or show the nearest.
     bool impostorBlend = true;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).

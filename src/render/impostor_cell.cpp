@@ -19,12 +19,19 @@ std::uint32_t impostorCell(const gpu::ImpostorModel& m, std::uint32_t clip, floa
     const glm::vec2 angles = impostorAngles(towardsCamera);
     const std::uint32_t azimuth =
         static_cast<std::uint32_t>(std::floor(angles.x / (2.0f * kPi) * static_cast<float>(m.views.x) + 0.5f)) % m.views.x;
-    const std::uint32_t elevation =
-        std::min(static_cast<std::uint32_t>(angles.y / (0.5f * kPi) * static_cast<float>(m.views.y)), m.views.y - 1u);
+    const std::uint32_t elevation = impostorBands(angles.y, m.views.y).band;
     const std::uint32_t frame =
         static_cast<std::uint32_t>(std::floor(phase * static_cast<float>(m.cells.z) + 0.5f)) % m.cells.z;
     const std::uint32_t pose = std::min(clip, m.cells.y - 1u) * m.cells.z + frame;
     return m.cells.x + (pose * m.views.y + elevation) * m.views.x + azimuth;
+}
+
+ImpostorBands impostorBands(float elevation, std::uint32_t bands) {
+    const float e = elevation / (0.5f * kPi) * static_cast<float>(bands);
+    const std::uint32_t band = std::min(static_cast<std::uint32_t>(e), bands - 1u);
+    const float along = e - static_cast<float>(band);  // 0 at the band's lower edge, 0.5 at its centre
+    if (along < 0.5f) return band == 0u ? ImpostorBands{band, band, 0.0f} : ImpostorBands{band, band - 1u, along + 0.5f};
+    return band + 1u == bands ? ImpostorBands{band, band, 0.0f} : ImpostorBands{band, band, along - 0.5f};
 }
 
 ImpostorBlend impostorBlend(const gpu::ImpostorModel& m, std::uint32_t clip, float phase, const glm::vec3& towardsCamera) {
@@ -33,15 +40,15 @@ ImpostorBlend impostorBlend(const gpu::ImpostorModel& m, std::uint32_t clip, flo
     const float f = phase * static_cast<float>(m.cells.z);
     const std::uint32_t a0 = static_cast<std::uint32_t>(std::floor(a)) % m.views.x, a1 = (a0 + 1u) % m.views.x;
     const std::uint32_t f0 = static_cast<std::uint32_t>(std::floor(f)) % m.cells.z, f1 = (f0 + 1u) % m.cells.z;
-    const std::uint32_t elevation =
-        std::min(static_cast<std::uint32_t>(angles.y / (0.5f * kPi) * static_cast<float>(m.views.y)), m.views.y - 1u);
+    const ImpostorBands bands = impostorBands(angles.y, m.views.y);
     const std::uint32_t firstPose = std::min(clip, m.cells.y - 1u) * m.cells.z;
     auto cell = [&](std::uint32_t frame, std::uint32_t azimuth) {
-        return m.cells.x + ((firstPose + frame) * m.views.y + elevation) * m.views.x + azimuth;
+        return m.cells.x + ((firstPose + frame) * m.views.y + bands.lower) * m.views.x + azimuth;
     };
     ImpostorBlend blend;
     blend.cells = {cell(f0, a0), cell(f0, a1), cell(f1, a0), cell(f1, a1)};
-    blend.weights = {a - std::floor(a), f - std::floor(f)};
+    blend.bandStep = bands.share > 0.0f ? m.views.x : 0u;
+    blend.weights = {a - std::floor(a), f - std::floor(f), bands.share};
     return blend;
 }
 

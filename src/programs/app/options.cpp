@@ -37,8 +37,8 @@ usage: crowd-render [options]
   --impostor-threshold PX impostor level below PX pixels across, 0 < PX < B of --lod-thresholds (default 32)
   --props on|off          characters carry their models' props (the soldier's rifle, one in eight a
                           flag; docs/props.md); off: none (default on)
-  --impostor-blend on|off impostors blend the two nearest views and animation frames; off: the nearest
-                          atlas cell, one texture fetch instead of four (default on)
+  --impostor-blend on|off impostors blend the two nearest views, elevation bands and animation frames;
+                          off: the nearest atlas cell, one texture fetch instead of up to eight (default on)
   --events on|off         the GPU event buffer: clip events (footsteps) of the characters in view,
                           found by a pass after culling (default on; docs/events.md)
   --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame; beyond N, the

@@ -32,7 +32,7 @@ struct CullOptions {
     bool shadowLod = true;  // casters' level in the shadow map from their size there (crowdgpu::RendererSettings)
     crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Compute;  // how the map's mesh casters are drawn
     bool lodFade = true;        // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
-    bool impostorBlend = true;  // impostors blend four atlas cells, or show the nearest (crowdgpu::RendererSettings)
+    bool impostorBlend = true;  // impostors blend up to eight atlas cells, or show the nearest (crowdgpu::RendererSettings)
     bool events = true;  // the GPU event buffer of the characters in view (crowdgpu::RendererSettings::events)
     // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
     crowdgpu::Raster raster = crowdgpu::Raster::Auto;
