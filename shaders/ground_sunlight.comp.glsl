@@ -5,25 +5,32 @@
 // so each texel centre of the map sees exactly one ground point: its filtered comparison is computed
 // here, in compute, and the ground's fragment shader takes one trilinear fetch of the result where it
 // made its comparisons (on the H100 fragment work runs on a small graphics slice; this pass runs on
-// every SM). Level 0 holds the comparisons; each higher level the mean of 2x2 texels of the one below,
-// so the far ground, where a texel is smaller than a pixel, averages its shadows instead of aliasing.
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(constant_id = 0) const bool kFirstLevel = true;
+// every SM). Each workgroup computes a 16x16 block of level 0 and, in shared memory, its means down to
+// one texel of level 4, so the far ground, where a texel is smaller than a pixel, averages its shadows
+// instead of aliasing, in one dispatch (no barrier between levels).
+layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(set = 0, binding = 0) uniform sampler2DShadow shadowMap;
-layout(set = 0, binding = 1, rgba8) uniform readonly image2D below;  // the level below (not read by level 0)
-layout(set = 0, binding = 2, rgba8) uniform writeonly image2D level;
+layout(set = 0, binding = 1, rgba8) uniform writeonly image2D level0;
+layout(set = 0, binding = 2, rgba8) uniform writeonly image2D level1;
+layout(set = 0, binding = 3, rgba8) uniform writeonly image2D level2;
+layout(set = 0, binding = 4, rgba8) uniform writeonly image2D level3;
+layout(set = 0, binding = 5, rgba8) uniform writeonly image2D level4;
 layout(push_constant) uniform Push {
     mat4 lightViewProjection;
     vec4 shadow;  // y: depth bias, z: one texel of the map in uv (as SceneUniforms::shadow)
+    uint size;    // the map's side in texels
+    uint levels;  // levels to write (1 to 5: fewer for maps under 16 texels)
 } push;
 
 #include "shadow_pcf.glsl.inc"
 
+shared float block[16 * 16];
+
 // The sunlight at the ground point under the map's texel `texel` (as sunlight() in shading.glsl.inc
 // computes it for that point: beyond the map's depth range, lit).
-float groundSunlightAt(ivec2 texel, ivec2 size) {
-    const vec2 uv = (vec2(texel) + 0.5) / vec2(size);
+float groundSunlightAt(uvec2 texel) {
+    const vec2 uv = (vec2(texel) + 0.5) / float(push.size);
     const mat4 m = push.lightViewProjection;
     // clip.xy = m[0].xy * x + m[2].xy * z + m[3].xy on the plane y = 0: solve for (x, z).
     const vec2 xz = inverse(mat2(m[0].xy, m[2].xy)) * (uv * 2.0 - 1.0 - m[3].xy);
@@ -32,17 +39,43 @@ float groundSunlightAt(ivec2 texel, ivec2 size) {
     return shadowMapSunlight(shadowMap, uv, depth - push.shadow.y, push.shadow.z);
 }
 
-void main() {
-    const ivec2 size = imageSize(level);
-    const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(texel, size))) return;
-    float lit;
-    if (kFirstLevel) {
-        lit = groundSunlightAt(texel, size);
-    } else {
-        const ivec2 source = min(texel * 2, imageSize(below) - 2);  // levels of odd size: clamp
-        lit = 0.25 * (imageLoad(below, source).r + imageLoad(below, source + ivec2(1, 0)).r +
-                      imageLoad(below, source + ivec2(0, 1)).r + imageLoad(below, source + ivec2(1, 1)).r);
+// Level k's texel of this thread (k >= 1, the threads of the block's first 16 >> k rows and columns):
+// the mean of the 2x2 level k - 1 texels the block holds, which then take its place in the block.
+float halve(uint k) {
+    const uvec2 local = gl_LocalInvocationID.xy;
+    const bool mine = all(lessThan(local, uvec2(16u >> k)));
+    float mean = 0.0;
+    if (mine) {
+        const uint i = local.y * 32u + local.x * 2u;
+        mean = 0.25 * (block[i] + block[i + 1u] + block[i + 16u] + block[i + 17u]);
     }
-    imageStore(level, texel, vec4(lit));
+    barrier();
+    if (mine) block[local.y * 16u + local.x] = mean;
+    barrier();
+    return mean;
+}
+
+// Stores level k's texel of this thread where that level has it.
+bool ownsTexel(uint k, out ivec2 texel) {
+    texel = ivec2((gl_WorkGroupID.xy * 16u >> k) + gl_LocalInvocationID.xy);
+    return k < push.levels && all(lessThan(gl_LocalInvocationID.xy, uvec2(16u >> k))) &&
+           all(lessThan(uvec2(texel), uvec2(max(push.size >> k, 1u))));
+}
+
+void main() {
+    // Threads past the map's edge take its last texel, so the means near the edge stay defined.
+    const uvec2 texel0 = min(gl_GlobalInvocationID.xy, uvec2(push.size - 1u));
+    const float lit = groundSunlightAt(texel0);
+    ivec2 texel;
+    if (ownsTexel(0u, texel)) imageStore(level0, texel, vec4(lit));
+    block[gl_LocalInvocationID.y * 16u + gl_LocalInvocationID.x] = lit;
+    barrier();
+    float mean = halve(1u);
+    if (ownsTexel(1u, texel)) imageStore(level1, texel, vec4(mean));
+    mean = halve(2u);
+    if (ownsTexel(2u, texel)) imageStore(level2, texel, vec4(mean));
+    mean = halve(3u);
+    if (ownsTexel(3u, texel)) imageStore(level3, texel, vec4(mean));
+    mean = halve(4u);
+    if (ownsTexel(4u, texel)) imageStore(level4, texel, vec4(mean));
 }

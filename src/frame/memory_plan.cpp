@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/vulkan_context.h"
+#include "render/ground_sunlight.h"
 #include "render/impostor_prop_sets.h"
 #include "render/mesh_raster.h"
 #include "skin/skin_target_layout.h"
@@ -69,7 +70,8 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                   {"culling lists and draw commands",
                    render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd),
                                                options.method == skin::Method::VertexShader)},
-                  {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4}};
+                  {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4},
+                  {"ground sunlight (shadow map on the ground)", render::GroundSunlight::bytesFor(options.shadowMapSize)}};
     if (options.shadowRaster == render::ShadowRasterPath::Compute)
         plan.items.push_back({"shadow map depth (compute raster)", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4});
     if (options.events)

@@ -18,9 +18,15 @@ namespace {
 // a feature the host would have to enable on the device it lends.
 constexpr VkFormat kFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
+// Level 0 and four halvings, made by one dispatch (16x16 blocks in shared memory): a pixel whose
+// footprint spans up to 16 map texels averages them; beyond, on the farthest ground, it aliases.
+constexpr std::uint32_t kMostLevels = 5;
+
 struct Push {
     glm::mat4 lightViewProjection;
     glm::vec4 shadow;
+    std::uint32_t size;
+    std::uint32_t levels;
 };
 
 VkImageView createView(const gpu::VulkanContext& context, VkImage image, std::uint32_t firstLevel,
@@ -50,7 +56,9 @@ void writeImage(const gpu::VulkanContext& context, VkDescriptorSet set, std::uin
 }  // namespace
 
 GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMap& map)
-    : context_(context), size_(map.size()), levels_(static_cast<std::uint32_t>(std::bit_width(map.size()))) {
+    : context_(context),
+      size_(map.size()),
+      levels_(std::min(kMostLevels, static_cast<std::uint32_t>(std::bit_width(map.size())))) {
     try {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
@@ -77,30 +85,24 @@ GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMa
         samplerInfo.maxLod = static_cast<float>(levels_ - 1);
         VK_CHECK(vkCreateSampler(context.device, &samplerInfo, nullptr, &sampler_));
 
-        const VkDescriptorSetLayoutBinding bindings[3] = {
-            {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-            {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-            {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
+        VkDescriptorSetLayoutBinding bindings[1 + kMostLevels];
+        bindings[0] = {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        for (std::uint32_t level = 0; level < kMostLevels; ++level)
+            bindings[1 + level] = {1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
         setLayout_ = gpu::createSetLayout(context, bindings);
-        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, levels_},
-                                               {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2 * levels_}};
-        pool_ = gpu::createDescriptorPool(context, sizes, levels_);
-        for (std::uint32_t level = 0; level < levels_; ++level) {
-            const VkDescriptorSet set = gpu::allocateSet(context, pool_, setLayout_);
-            writeImage(context, set, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(), map.view(),
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-            // Level 0 reads no level below; its binding holds its own view, never loaded.
-            writeImage(context, set, 1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
-                       levelViews_[level == 0 ? 0 : level - 1], VK_IMAGE_LAYOUT_GENERAL);
-            writeImage(context, set, 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE, levelViews_[level],
-                       VK_IMAGE_LAYOUT_GENERAL);
-            sets_.push_back(set);
-        }
+        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
+                                               {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kMostLevels}};
+        pool_ = gpu::createDescriptorPool(context, sizes, 1);
+        set_ = gpu::allocateSet(context, pool_, setLayout_);
+        writeImage(context, set_, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(), map.view(),
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        // A map too small for every level binds its last level in the others' places (never written).
+        for (std::uint32_t level = 0; level < kMostLevels; ++level)
+            writeImage(context, set_, 1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
+                       levelViews_[std::min(level, levels_ - 1)], VK_IMAGE_LAYOUT_GENERAL);
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
         layout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
-        const std::uint32_t first[] = {1u}, higher[] = {0u};
-        firstLevel_ = gpu::createComputePipeline(context, ground_sunlight_comp_spv, layout_, first);
-        higherLevel_ = gpu::createComputePipeline(context, ground_sunlight_comp_spv, layout_, higher);
+        pipeline_ = gpu::createComputePipeline(context, ground_sunlight_comp_spv, layout_, {});
     } catch (...) {
         release();
         throw;
@@ -110,9 +112,18 @@ GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMa
 
 GroundSunlight::~GroundSunlight() { release(); }
 
+std::uint64_t GroundSunlight::bytesFor(std::uint32_t size) {
+    const std::uint32_t levels = std::min(kMostLevels, static_cast<std::uint32_t>(std::bit_width(size)));
+    std::uint64_t bytes = 0;
+    for (std::uint32_t level = 0; level < levels; ++level) {
+        const std::uint64_t side = std::max(size >> level, 1u);
+        bytes += side * side * 4;  // RGBA8
+    }
+    return bytes;
+}
+
 void GroundSunlight::release() {
-    for (VkPipeline pipeline : {firstLevel_, higherLevel_})
-        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
+    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     if (pool_) vkDestroyDescriptorPool(context_.device, pool_, nullptr);
     if (setLayout_) vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
@@ -121,7 +132,7 @@ void GroundSunlight::release() {
     if (view_) vkDestroyImageView(context_.device, view_, nullptr);
     if (image_) vkDestroyImage(context_.device, image_, nullptr);
     if (memory_) vkFreeMemory(context_.device, memory_, nullptr);
-    firstLevel_ = higherLevel_ = VK_NULL_HANDLE;
+    pipeline_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
     pool_ = VK_NULL_HANDLE;
     setLayout_ = VK_NULL_HANDLE;
@@ -136,22 +147,15 @@ void GroundSunlight::record(VkCommandBuffer cmd, const glm::mat4& lightViewProje
                             float texel) const {
     const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1};
     constexpr gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-    // The previous frame's ground must be done sampling before the levels are written again (and read:
-    // level 0's dispatch binds a level below too, which it never loads).
-    gpu::imageBarrier(cmd, image_, all, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0},
-                      {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+    // The previous frame's ground must be done sampling before the levels are written again.
+    gpu::imageBarrier(cmd, image_, all, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0}, computeWrite,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-    const Push push{lightViewProjection, glm::vec4(0.0f, depthBias, texel, 0.0f)};
-    for (std::uint32_t level = 0; level < levels_; ++level) {
-        if (level > 0)  // the level below is written before this one reads it
-            gpu::memoryBarrier(cmd, computeWrite, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, level == 0 ? firstLevel_ : higherLevel_);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[level], 0, nullptr);
-        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-        const std::uint32_t side = std::max(size_ >> level, 1u);
-        vkCmdDispatch(cmd, (side + 7) / 8, (side + 7) / 8, 1);
-    }
+    const Push push{lightViewProjection, glm::vec4(0.0f, depthBias, texel, 0.0f), size_, levels_};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    const std::uint32_t blocks = (size_ + 15) / 16;
+    vkCmdDispatch(cmd, blocks, blocks, 1);
     gpu::imageBarrier(cmd, image_, all, computeWrite,
                       {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
                       VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

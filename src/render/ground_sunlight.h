@@ -19,6 +19,8 @@ class ShadowMap;
 class GroundSunlight {
 public:
     GroundSunlight(const gpu::VulkanContext& context, const ShadowMap& map);
+    // Its texels' bytes for a map of `size` texels a side (the memory plan's estimate).
+    static std::uint64_t bytesFor(std::uint32_t size);
     ~GroundSunlight();
     GroundSunlight(const GroundSunlight&) = delete;
     GroundSunlight& operator=(const GroundSunlight&) = delete;
@@ -43,14 +45,13 @@ private:
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize bytes_ = 0;
     VkImageView view_ = VK_NULL_HANDLE;             // every level, sampled by the ground
-    std::vector<VkImageView> levelViews_;           // one level each, written (and read by the next)
+    std::vector<VkImageView> levelViews_;           // one level each, written
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    std::vector<VkDescriptorSet> sets_;             // one a level
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline firstLevel_ = VK_NULL_HANDLE;
-    VkPipeline higherLevel_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render
