@@ -13,10 +13,11 @@
 # folder: the same script over the binaries of the commit before the tiles gives the full-screen
 # resolve's figures to compare with).
 #   on the H100:      bash bench/run_tile_resolve.sh
-#   here on lavapipe: DEVICE= BIN=build FRAMES=3 WARMUP=1 SIZE=480x270 STRESS_COUNT=3000 \
-#                     IMPOSTOR_COUNT=20000 bash bench/run_tile_resolve.sh
+#   here on lavapipe: DEVICE= BIN=build FRAMES=3 WARMUP=1 SIZE=480x270 PAPER_COUNT=4000 STRESS_COUNT=3000 \
+#                     IMPOSTOR_COUNT=8000 bash bench/run_tile_resolve.sh
 # FRAMES (default 200) and WARMUP (20) as crowd-bench's --frames and --warmup; DEVICE (NVIDIA): part of
-# the device's name, empty for the first device; SIZE (1920x1080); STRESS_COUNT (100000); IMPOSTOR_COUNT
+# the device's name, empty for the first device; SIZE (1920x1080); PAPER_COUNT (paper-fig4's own, 10,240;
+# lavapipe's 128 MiB storage-buffer range holds 9,510 with compute); STRESS_COUNT (100000); IMPOSTOR_COUNT
 # (1000000); LIMITS ("0 64 auto").
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
@@ -24,6 +25,7 @@ frames=${FRAMES:-200}
 warmup=${WARMUP:-20}
 device=${DEVICE-NVIDIA}
 size=${SIZE:-1920x1080}
+paper_count=${PAPER_COUNT:-}
 stress_count=${STRESS_COUNT:-100000}
 impostor_count=${IMPOSTOR_COUNT:-1000000}
 read -r -a limits <<<"${LIMITS:-0 64 auto}"
@@ -41,7 +43,7 @@ percent() { awk -v a="$1" -v b="$2" 'BEGIN { if (a + 0 > 0 && b != "") printf "%
 
 scene_flags() {
   case $1 in
-    paper-fig4) echo "--scene paper-fig4" ;;
+    paper-fig4) echo "--scene paper-fig4${paper_count:+ --counts $paper_count}" ;;
     default) echo "--scene default" ;;
     stress) echo "--scene stress --counts $stress_count --start 20" ;;
     impostors) echo "--scene stress --counts $impostor_count --start 0 --impostors on" ;;
@@ -66,7 +68,7 @@ done
   echo "frame: wall clock between frame starts (two frames in flight), median and p95; raster: the compute"
   echo "rasterizers' pass (clears, splits, rasterizing, tile scans); draw: the colour pass (with the resolves)"
   echo "($(csv_value "$res/bench-paper-fig4-${limits[0]}-1.csv" pass_clock)); vs ${limits[0]}: the median frame against"
-  echo "--mesh-raster-limit ${limits[0]}. paper-fig4: 10,240 flown over; default: the default scene; stress: $stress_count"
+  echo "--mesh-raster-limit ${limits[0]}. paper-fig4: ${paper_count:-10,240} flown over; default: the default scene; stress: $stress_count"
   echo "from 20 s, inside; impostors: stress $impostor_count from above, --impostors on. tris: mesh triangles drawn."
   printf "%-10s %-5s %1s | %8s %8s %8s | %8s %8s | %12s\n" scene limit r frame p95 "vs ${limits[0]}" raster draw tris
   for round in 1 2; do

@@ -139,6 +139,7 @@ std::size_t differingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b) 
 // The tiles the scan lists (16 and 32 px a side) are exactly those in which the read-back visibility
 // buffer holds a drawn word, for the impostors' buffer and the meshes': none missing, none extra, none
 // twice, and the indirect draw is six vertices a listed tile. Both buffers cover some tiles, not all.
+// A next frame looking away from the crowd lists none.
 TEST_F(GpuTest, ResolveTilesAreTheTilesTheRasterizersDrewInto) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     for (std::uint32_t tile : {16u, 32u}) {
@@ -162,6 +163,17 @@ TEST_F(GpuTest, ResolveTilesAreTheTilesTheRasterizersDrewInto) {
         EXPECT_GE(meshTiles, 3u);
         EXPECT_LT(impostorTiles, all / 2);
         EXPECT_LT(meshTiles, all / 2);
+        // The next frame looks away from everyone: both lists are empty again (each frame starts its own).
+        render::Camera away = test::internalCamera(scene.renderer.camera);
+        away.target = away.eye + glm::vec3(0.0f, 0.0f, 1.0f);
+        scene.renderer.camera = test::appCamera(away);
+        scene.render(0.8);
+        EXPECT_EQ(expectListedTilesAreCovered(*context, *recorder.impostorRaster()->tiles(),
+                                              recorder.impostorRaster()->visibility(0), "impostors, looking away"),
+                  0u);
+        EXPECT_EQ(readTiles(*context, *recorder.impostorRaster()->tiles()).header.instanceCount, 0u);
+        ASSERT_TRUE(recorder.meshesInComputeThisFrame(0));
+        EXPECT_EQ(readTiles(*context, *recorder.meshRaster()->tiles()).header.instanceCount, 0u);
     }
 }
 

@@ -29,6 +29,8 @@ struct ResolvePush {
     glm::vec4 cameraPosition;
     glm::vec4 viewport;  // offset, extent
 };
+// The tiles' vertex shader (visibility_tiles.vert.glsl) reads the viewport there.
+static_assert(offsetof(ResolvePush, viewport) == 16);
 }  // namespace
 
 ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,

@@ -28,6 +28,8 @@ struct ResolvePush {
     glm::vec4 viewport;  // offset, extent
     glm::uvec4 idLayout;  // x: triangle bits
 };
+// The tiles' vertex shader (visibility_tiles.vert.glsl) reads the viewport there.
+static_assert(offsetof(ResolvePush, viewport) == 16);
 
 // The largest level 0 of the pool's models, in triangles.
 std::uint32_t largestTriangleCount(const GeometryPool& pool) {
