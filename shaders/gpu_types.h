@@ -261,6 +261,24 @@ struct MeshSplit {
     uint unused2;
 };
 
+// ---- The visibility buffers' resolve over covered tiles (render/visibility_tiles.h) ----
+// A scan pass lists the screen tiles (a tile side set per resolve, a multiple of VISIBILITY_TILE_GROUP
+// pixels) that hold any drawn pixel of a visibility buffer; the resolve draws them by
+// an indirect draw, an instance per listed tile (its two triangles), so uncovered pixels cost no
+// fragment. The list: this header (a VkDrawIndirectCommand and the draw's count), then the tiles,
+// x | y << 16 each (in tiles), read by the resolve's vertex shader as a per-instance attribute.
+#define VISIBILITY_TILE_GROUP 16  // the scan's workgroup is this many threads a side
+struct VisibilityTileList {
+    uint vertexCount;    // 6: a tile's two triangles
+    uint instanceCount;  // tiles listed
+    uint firstVertex;
+    uint firstInstance;
+    uint drawCount;      // 1: vkCmdDrawIndirectCount's count (render/visibility_tiles.cpp says why)
+    uint unused0;
+    uint unused1;
+    uint unused2;
+};
+
 // ---- Animation on the GPU (anim/clip_library.h flattens the clips; render/animation_pass runs them) ----
 
 // Samples of a clip's root-motion curve per cycle (plus one: the curve's end, the stride).

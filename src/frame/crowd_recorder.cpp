@@ -74,6 +74,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       raster_(rasterInEffect(context, options)),
       rasterLimitPixels_(options.raster == render::RasterMode::Compute ? std::numeric_limits<float>::infinity()
                                                                       : options.rasterLimitPixels),
+      resolveTilePixels_(options.resolveTilePixels),
       cull_(options.cull),
       animation_(options.animation),
       shadows_(options.shadows),
@@ -95,7 +96,8 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
     meshPathOn_.assign(options.framesInFlight, false);
     if (meshLimit > 0.0f)
         meshRaster_ = std::make_unique<render::MeshRaster>(context_, pool_, buffers_, lists_, scene_.setLayout(),
-                                                           target_, options.framesInFlight, meshLimit);
+                                                           target_, options.framesInFlight, meshLimit,
+                                                           resolveTilePixels_);
 }
 
 void CrowdRecorder::setShadowRaster(render::ShadowRasterPath path) {
@@ -353,7 +355,7 @@ void CrowdRecorder::enableImpostors() {
     if (raster_ != render::RasterMode::Hardware) {
         impostorRaster_ = std::make_unique<render::ImpostorRaster>(context_, pool_, buffers_, lists_, *atlas_,
                                                                    scene_.setLayout(), target_, framesInFlight_,
-                                                                   rasterLimitPixels_);
+                                                                   rasterLimitPixels_, resolveTilePixels_);
         split = {&impostorRaster_->split(), &impostorRaster_->hardwareList()};
     }
     impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout(),

@@ -82,6 +82,10 @@ struct RecorderOptions {
     // limit on frames whose slot's previous frame drew at least meshRasterMinTriangles mesh triangles.
     float meshRasterLimitPixels = render::kMeshRasterAutomatic;
     std::uint64_t meshRasterMinTriangles = render::kAutoMeshRasterMinTriangles;
+    // The compute rasterizers' resolve: over the screen tiles of this side they drew into
+    // (render/visibility_resolve.h). Tests and measurements: 0 resolves every pixel of the viewport, the
+    // reference the tiles must match.
+    std::uint32_t resolveTilePixels = render::kResolveTilePixels;
     // Animation events of the characters in view, into a buffer for the host (render/event_pass.h);
     // the buffer keeps eventCapacity records a frame.
     bool events = true;
@@ -250,6 +254,7 @@ private:
     std::vector<bool> meshPathOn_;          // per slot: this frame's decision
     render::RasterMode raster_;  // in effect (auto without what it needs: hardware)
     float rasterLimitPixels_;
+    std::uint32_t resolveTilePixels_;  // the rasterizers' resolve tiles (0: the whole viewport)
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;

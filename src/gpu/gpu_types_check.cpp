@@ -34,6 +34,8 @@ static_assert(sizeof(ImpostorDrawsHeader) == 16);
 static_assert(sizeof(ImpostorRasterPush) == 112 && offsetof(ImpostorRasterPush, viewport) == 80 &&
               offsetof(ImpostorRasterPush, limits) == 96);
 static_assert(sizeof(ImpostorSplit) == 32 && offsetof(ImpostorSplit, largeDispatch) == 16);
+// Read by vkCmdDrawIndirectCount: a VkDrawIndirectCommand, then the count; the tiles follow at 32.
+static_assert(offsetof(VisibilityTileList, drawCount) == sizeof(VkDrawIndirectCommand) && sizeof(VisibilityTileList) == 32);
 static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + 6 * 16 + 3 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160 &&
               offsetof(CullUniforms, lightPlanes) == 176 && offsetof(CullUniforms, shadow) == 272 &&

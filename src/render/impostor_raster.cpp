@@ -11,7 +11,6 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/raster_mode.h"
-#include "render/visibility_resolve.h"
 #include "impostor_raster.comp.spv.h"
 #include "impostor_resolve.frag.spv.h"
 
@@ -30,11 +29,14 @@ struct ResolvePush {
     glm::vec4 cameraPosition;
     glm::vec4 viewport;  // offset, extent
 };
+// The tiles' vertex shader (visibility_tiles.vert.glsl) reads the viewport there.
+static_assert(offsetof(ResolvePush, viewport) == 16);
 }  // namespace
 
 ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                                const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
-                               const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels)
+                               const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels,
+                               std::uint32_t resolveTilePixels)
     : context_(context), crowd_(crowd), lists_(lists), atlas_(atlas), limitPixels_(limitPixels), slots_(framesInFlight) {
     requireComputeRaster(context, target);
     try {
@@ -68,9 +70,10 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
         drawSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_FRAGMENT_BIT, drawBindings);
         const VkDescriptorSetLayout resolveSets[4] = {sceneSetLayout, drawSet_->layout(), atlas.setLayout(),
                                                       resolvePrototype_->layout()};
-        const VkPushConstantRange resolvePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ResolvePush)};
+        const VkPushConstantRange resolvePush{kResolvePushStages, 0, sizeof(ResolvePush)};
         resolveLayout_ = gpu::createPipelineLayout(context, resolveSets, {&resolvePush, 1});
-        resolvePipeline_ = createVisibilityResolve(context, impostor_resolve_frag_spv, resolveLayout_, target);
+        resolve_ = std::make_unique<VisibilityResolve>(context, impostor_resolve_frag_spv, resolveLayout_, target,
+                                                       framesInFlight, resolveTilePixels);
     } catch (...) {
         release();
         throw;
@@ -80,13 +83,13 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
 ImpostorRaster::~ImpostorRaster() { release(); }
 
 void ImpostorRaster::release() {
-    if (resolvePipeline_) vkDestroyPipeline(context_.device, resolvePipeline_, nullptr);
+    resolve_.reset();
     if (resolveLayout_) vkDestroyPipelineLayout(context_.device, resolveLayout_, nullptr);
     if (rasterPipeline_) vkDestroyPipeline(context_.device, rasterPipeline_, nullptr);
     if (largePipeline_) vkDestroyPipeline(context_.device, largePipeline_, nullptr);
     largePipeline_ = VK_NULL_HANDLE;
     if (rasterLayout_) vkDestroyPipelineLayout(context_.device, rasterLayout_, nullptr);
-    resolvePipeline_ = VK_NULL_HANDLE, resolveLayout_ = VK_NULL_HANDLE;
+    resolveLayout_ = VK_NULL_HANDLE;
     rasterPipeline_ = VK_NULL_HANDLE, rasterLayout_ = VK_NULL_HANDLE;
     for (Slot& slot : slots_) {
         slot.rasterSet.reset();
@@ -166,31 +169,32 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, largePipeline_);
     vkCmdDispatchIndirect(cmd, split_.buffer, offsetof(gpu::ImpostorSplit, largeDispatch));
-    // The impostor draws' pass reads the split's count, the colour draw the hardware list, the resolve
-    // the visibility buffer.
+    // The impostor draws' pass reads the split's count, the colour draw the hardware list, the tile scan
+    // and the resolve the visibility buffer.
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+    resolve_->recordTiles(cmd, index, slot.visibility, slot.extent);
 }
 
 void ImpostorRaster::recordResolve(VkCommandBuffer cmd, std::uint32_t index, VkDescriptorSet sceneSet,
                                    const glm::vec3& eye, const VkRect2D& viewport, bool blend) const {
     const Slot& slot = slots_[index];
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolvePipeline_);
+    resolve_->bind(cmd);
     const VkDescriptorSet sets[4] = {sceneSet, drawSet_->set(), atlas_.set(), slot.resolveSet->set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolveLayout_, 0, 4, sets, 0, nullptr);
     const ResolvePush push{glm::vec4(eye, blend ? 1.0f : 0.0f),
                            glm::vec4(static_cast<float>(viewport.offset.x), static_cast<float>(viewport.offset.y),
                                      static_cast<float>(slot.extent.width), static_cast<float>(slot.extent.height))};
-    vkCmdPushConstants(cmd, resolveLayout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdPushConstants(cmd, resolveLayout_, kResolvePushStages, 0, sizeof push, &push);
+    resolve_->draw(cmd, index);
 }
 
 std::uint64_t ImpostorRaster::bytes() const {
     std::uint64_t total = split_.size + hardwareList_.size + largeList_.size;
     for (const Slot& slot : slots_) total += slot.visibility.size;
-    return total;
+    return total + resolve_->bytes();
 }
 
 }  // namespace render

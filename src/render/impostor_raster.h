@@ -4,9 +4,10 @@
 // the impostor's place in the list below, kept by atomic min), except those larger on screen than
 // its limit or crossing the near plane, which it lists for the hardware path (the impostor draw reads
 // that list, ImpostorDraw's `split`); those too large for one thread to walk get a workgroup each in a
-// second, indirect dispatch. Inside the colour pass a full-screen resolve shades the covered
-// pixels with the hardware path's shading and writes their depth, so the depth test merges them with
-// the hardware-drawn meshes and impostors. Shadows stay on the hardware path.
+// second, indirect dispatch. Inside the colour pass a resolve over the covered screen tiles
+// (render/visibility_resolve.h) shades the covered pixels with the hardware path's shading and writes
+// their depth, so the depth test merges them with the hardware-drawn meshes and impostors. Shadows stay
+// on the hardware path.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "render/geometry_pool.h"
 #include "render/impostor_atlas.h"
 #include "render/target_format.h"
+#include "render/visibility_resolve.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -31,16 +33,18 @@ class ImpostorRaster {
 public:
     // `limitPixels`: the longest side of an impostor's screen rectangle the compute path draws
     // (infinity: every impostor not crossing the near plane). The target must be single-sampled.
+    // `resolveTilePixels`: the resolve's tile side (VisibilityResolve; 0: every pixel of the viewport).
     ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                    const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
-                   const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels);
+                   const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels,
+                   std::uint32_t resolveTilePixels = kResolveTilePixels);
     ~ImpostorRaster();
     ImpostorRaster(const ImpostorRaster&) = delete;
     ImpostorRaster& operator=(const ImpostorRaster&) = delete;
 
     // Outside any render pass, after culling and before ImpostorDraw::recordDraws: clears the slot's
     // visibility buffer (made to the viewport's extent, grown when it grows: the host has waited for
-    // the slot's previous frame) and rasterizes.
+    // the slot's previous frame), rasterizes and lists the covered tiles for the resolve.
     // `blend`: the four atlas cells' blend, or the nearest cell (impostor-blend), as the colour draw.
     void record(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& viewProjection, const glm::vec3& eye,
                 VkExtent2D extent, bool blend);
@@ -54,6 +58,8 @@ public:
     // The slot's visibility buffer (tests) and its extent.
     const gpu::Buffer& visibility(std::uint32_t slot) const { return slots_[slot].visibility; }
     VkExtent2D visibilityExtent(std::uint32_t slot) const { return slots_[slot].extent; }
+    // The slot's covered tiles (null when the resolve covers the viewport).
+    const VisibilityTiles* tiles() const { return resolve_->tiles(); }
     std::uint64_t bytes() const;
 
 private:
@@ -81,7 +87,7 @@ private:
     VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
     VkPipeline largePipeline_ = VK_NULL_HANDLE;  // the same shader's second dispatch (LARGE_PASS)
     VkPipelineLayout resolveLayout_ = VK_NULL_HANDLE;
-    VkPipeline resolvePipeline_ = VK_NULL_HANDLE;
+    std::unique_ptr<VisibilityResolve> resolve_;
 };
 
 }  // namespace render

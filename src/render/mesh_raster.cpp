@@ -10,7 +10,6 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/raster_mode.h"
-#include "render/visibility_resolve.h"
 #include "mesh_raster.comp.spv.h"
 #include "mesh_raster_split.comp.spv.h"
 #include "mesh_resolve.frag.spv.h"
@@ -29,6 +28,8 @@ struct ResolvePush {
     glm::vec4 viewport;  // offset, extent
     glm::uvec4 idLayout;  // x: triangle bits
 };
+// The tiles' vertex shader (visibility_tiles.vert.glsl) reads the viewport there.
+static_assert(offsetof(ResolvePush, viewport) == 16);
 
 // The largest level 0 of the pool's models, in triangles.
 std::uint32_t largestTriangleCount(const GeometryPool& pool) {
@@ -53,7 +54,7 @@ std::uint64_t meshRasterListBytes(std::uint32_t listCapacity) {
 
 MeshRaster::MeshRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                        const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target,
-                       std::uint32_t framesInFlight, float limitPixels)
+                       std::uint32_t framesInFlight, float limitPixels, std::uint32_t resolveTilePixels)
     : context_(context), pool_(pool), crowd_(crowd), lists_(lists), target_(target), limitPixels_(limitPixels),
       triangleBits_(meshRasterTriangleBits(largestTriangleCount(pool))), slots_(framesInFlight), sceneSetLayout_(sceneSetLayout) {
     requireComputeRaster(context, target);
@@ -72,7 +73,7 @@ MeshRaster::MeshRaster(const gpu::VulkanContext& context, const GeometryPool& po
                                                     {kStorage, split_.buffer},
                                                     {kStorage, list_.buffer}};
         splitSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, splitBindings);
-        makePipelines(sceneSetLayout);
+        makePipelines(sceneSetLayout, framesInFlight, resolveTilePixels);
     } catch (...) {
         release();
         throw;
@@ -81,7 +82,8 @@ MeshRaster::MeshRaster(const gpu::VulkanContext& context, const GeometryPool& po
 
 MeshRaster::~MeshRaster() { release(); }
 
-void MeshRaster::makePipelines(VkDescriptorSetLayout sceneSetLayout) {
+void MeshRaster::makePipelines(VkDescriptorSetLayout sceneSetLayout, std::uint32_t framesInFlight,
+                               std::uint32_t resolveTilePixels) {
     // The slots' sets are made when the skinned vertices are known; layouts of the same shape, made here
     // with any buffer behind them (never bound), serve the pipeline layouts.
     const gpu::BufferBinding any{kStorage, split_.buffer};
@@ -99,13 +101,15 @@ void MeshRaster::makePipelines(VkDescriptorSetLayout sceneSetLayout) {
     rasterPipeline_ = gpu::createComputePipeline(context_, mesh_raster_comp_spv, rasterLayout_, {});
 
     const VkDescriptorSetLayout resolveSets[2] = {sceneSetLayout, resolvePrototype.layout()};
-    const VkPushConstantRange resolvePush{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ResolvePush)};
+    const VkPushConstantRange resolvePush{kResolvePushStages, 0, sizeof(ResolvePush)};
     resolveLayout_ = gpu::createPipelineLayout(context_, resolveSets, {&resolvePush, 1});
-    resolvePipeline_ = createVisibilityResolve(context_, mesh_resolve_frag_spv, resolveLayout_, target_);
+    resolve_ = std::make_unique<VisibilityResolve>(context_, mesh_resolve_frag_spv, resolveLayout_, target_,
+                                                   framesInFlight, resolveTilePixels);
 }
 
 void MeshRaster::release() {
-    for (VkPipeline* pipeline : {&resolvePipeline_, &rasterPipeline_, &splitPipeline_}) {
+    resolve_.reset();
+    for (VkPipeline* pipeline : {&rasterPipeline_, &splitPipeline_}) {
         if (*pipeline) vkDestroyPipeline(context_.device, *pipeline, nullptr);
         *pipeline = VK_NULL_HANDLE;
     }
@@ -197,32 +201,34 @@ void MeshRaster::record(VkCommandBuffer cmd, std::uint32_t index, const SkinnedV
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rasterLayout_, 0, 1, &rasterSet, 0, nullptr);
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, groups, 1, 1);
-    // The colour draw reads the instance counts the split cleared; the resolve, the visibility buffer.
+    // The colour draw reads the instance counts the split cleared; the tile scan and the resolve, the
+    // visibility buffer.
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
                         VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+    resolve_->recordTiles(cmd, index, slot.visibility, slot.extent);
 }
 
 void MeshRaster::recordResolve(VkCommandBuffer cmd, std::uint32_t index, VkDescriptorSet sceneSet,
                                const glm::vec3& eye, const VkRect2D& viewport) const {
     const Slot& slot = slots_[index];
     if (!slot.resolveSet) return;  // never recorded: nothing to resolve
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolvePipeline_);
+    resolve_->bind(cmd);
     const VkDescriptorSet sets[2] = {sceneSet, slot.resolveSet->set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, resolveLayout_, 0, 2, sets, 0, nullptr);
     const ResolvePush push{glm::vec4(eye, 1.0f),
                            glm::vec4(static_cast<float>(viewport.offset.x), static_cast<float>(viewport.offset.y),
                                      static_cast<float>(slot.extent.width), static_cast<float>(slot.extent.height)),
                            glm::uvec4(triangleBits_, 0u, 0u, 0u)};
-    vkCmdPushConstants(cmd, resolveLayout_, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdPushConstants(cmd, resolveLayout_, kResolvePushStages, 0, sizeof push, &push);
+    resolve_->draw(cmd, index);
 }
 
 std::uint64_t MeshRaster::bytes() const {
     std::uint64_t total = split_.size + list_.size;
     for (const Slot& slot : slots_) total += slot.visibility.size;
-    return total;
+    return total + (resolve_ ? resolve_->bytes() : 0);
 }
 
 }  // namespace render

@@ -5,9 +5,9 @@
 // command with no instance; a raster pass draws the listed characters' skinned triangles into a
 // visibility buffer (a 64-bit word per pixel: depth bits above, the list place and triangle below,
 // kept by atomic min), with the hardware's rules (pixel centres, 1/256-pixel snapping, the top-left
-// rule, back faces culled). Inside the colour pass a full-screen resolve interpolates and shades the
-// covered pixels as the draw pass does and writes their depth, so the depth test merges them with
-// everything else. It reads the skinned vertices as storage: the methods that skin into a buffer.
+// rule, back faces culled). Inside the colour pass a resolve over the covered screen tiles
+// (render/visibility_resolve.h) interpolates and shades the covered pixels as the draw pass does and
+// writes their depth, so the depth test merges them with everything else. It reads the skinned vertices as storage: the methods that skin into a buffer.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -23,6 +23,7 @@
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
 #include "render/target_format.h"
+#include "render/visibility_resolve.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -40,9 +41,10 @@ class MeshRaster {
 public:
     // `limitPixels`: the largest pose sphere (diameter on screen) the compute path draws (infinity:
     // every character wholly in front of the eye). The target must be single-sampled.
+    // `resolveTilePixels`: the resolve's tile side (VisibilityResolve; 0: every pixel of the viewport).
     MeshRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target,
-               std::uint32_t framesInFlight, float limitPixels);
+               std::uint32_t framesInFlight, float limitPixels, std::uint32_t resolveTilePixels = kResolveTilePixels);
     ~MeshRaster();
     MeshRaster(const MeshRaster&) = delete;
     MeshRaster& operator=(const MeshRaster&) = delete;
@@ -51,7 +53,7 @@ public:
     // binding can hold).
     bool canRead(const SkinnedVertices& vertices) const;
     // Outside any render pass, after skinning: clears the slot's visibility buffer (made to the
-    // viewport's extent), splits the colour list and rasterizes. `pixelsPerUnit`: the viewport's height
+    // viewport's extent), splits the colour list, rasterizes and lists the covered tiles for the resolve. `pixelsPerUnit`: the viewport's height
     // over 2 tan(fovY / 2), as culling's projected size.
     void record(VkCommandBuffer cmd, std::uint32_t slot, const SkinnedVertices& vertices,
                 const glm::mat4& viewProjection, const glm::vec3& eye, float pixelsPerUnit, VkExtent2D extent);
@@ -66,6 +68,8 @@ public:
     const gpu::Buffer& list() const { return list_; }
     const gpu::Buffer& visibility(std::uint32_t slot) const { return slots_[slot].visibility; }
     VkExtent2D visibilityExtent(std::uint32_t slot) const { return slots_[slot].extent; }
+    // The slot's covered tiles (null when the resolve covers the viewport).
+    const VisibilityTiles* tiles() const { return resolve_->tiles(); }
     // Bits of an id that hold the triangle (enough for the largest model's), and the most characters
     // an id can name.
     std::uint32_t triangleBits() const { return triangleBits_; }
@@ -80,7 +84,7 @@ private:
         std::unique_ptr<gpu::DescriptorBundle> rasterSet, resolveSet;
     };
     void makeSets(std::uint32_t slot, VkExtent2D extent, const SkinnedVertices& vertices);
-    void makePipelines(VkDescriptorSetLayout sceneSetLayout);
+    void makePipelines(VkDescriptorSetLayout sceneSetLayout, std::uint32_t framesInFlight, std::uint32_t resolveTilePixels);
     void release();
 
     const gpu::VulkanContext& context_;
@@ -96,7 +100,8 @@ private:
     std::unique_ptr<gpu::DescriptorBundle> splitSet_;
     VkDescriptorSetLayout sceneSetLayout_ = VK_NULL_HANDLE;
     VkPipelineLayout splitLayout_ = VK_NULL_HANDLE, rasterLayout_ = VK_NULL_HANDLE, resolveLayout_ = VK_NULL_HANDLE;
-    VkPipeline splitPipeline_ = VK_NULL_HANDLE, rasterPipeline_ = VK_NULL_HANDLE, resolvePipeline_ = VK_NULL_HANDLE;
+    VkPipeline splitPipeline_ = VK_NULL_HANDLE, rasterPipeline_ = VK_NULL_HANDLE;
+    std::unique_ptr<VisibilityResolve> resolve_;
 };
 
 }  // namespace render
