@@ -396,7 +396,8 @@ struct SceneUniforms {
                           // model's base-colour texture
     vec4 palette[MAX_MATERIALS];
     mat4 lightViewProjection;  // world to the shadow map's clip space
-    vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: unused
+    vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: the ground
+                               // sunlight image's first level made this frame (render/ground_sunlight.h)
 };
 
 // ---- Animation events on the GPU (render/event_pass.h, shaders/events.comp.glsl, docs/events.md) ----

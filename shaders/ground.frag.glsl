@@ -35,7 +35,10 @@ float groundSunlightAt(vec3 world) {
     if (scene.shadow.x == 0.0) return 1.0;
     vec2 uv = (scene.lightViewProjection * vec4(world, 1.0)).xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-    return texture(groundSunlight, uv).r;
+    // Within the five levels made this frame, from the first (finer ones are a small viewport's leftovers,
+    // coarser ones never made).
+    float lod = clamp(textureQueryLod(groundSunlight, uv).y, scene.shadow.w, scene.shadow.w + 4.0);
+    return textureLod(groundSunlight, uv, lod).r;
 }
 
 void main() {

@@ -5,12 +5,14 @@
 // so each texel centre of the map sees exactly one ground point: its filtered comparison is computed
 // here, in compute, and the ground's fragment shader takes one trilinear fetch of the result where it
 // made its comparisons (on the H100 fragment work runs on a small graphics slice; this pass runs on
-// every SM). Each workgroup computes a 16x16 block of level 0 and, in shared memory, its means down to
-// one texel of level 4, so the far ground, where a texel is smaller than a pixel, averages its shadows
-// instead of aliasing, in one dispatch (no barrier between levels).
+// every SM). Each workgroup computes a 16x16 block of the first level and, in shared memory, its means
+// down to one texel four levels below, so the far ground, where a texel is smaller than a pixel,
+// averages its shadows instead of aliasing, in one dispatch (no barrier between levels). The first level
+// is 0 unless the viewport is too small to show the map's texels (render/ground_sunlight.h).
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(set = 0, binding = 0) uniform sampler2DShadow shadowMap;
+// The first level made and the four below it.
 layout(set = 0, binding = 1, rgba8) uniform writeonly image2D level0;
 layout(set = 0, binding = 2, rgba8) uniform writeonly image2D level1;
 layout(set = 0, binding = 3, rgba8) uniform writeonly image2D level2;
@@ -19,16 +21,18 @@ layout(set = 0, binding = 5, rgba8) uniform writeonly image2D level4;
 layout(push_constant) uniform Push {
     mat4 lightViewProjection;
     vec4 shadow;  // y: depth bias, z: one texel of the map in uv (as SceneUniforms::shadow)
-    uint size;    // the map's side in texels
+    uint size;    // the first level's side in texels
     uint levels;  // levels to write (1 to 5: fewer for maps under 16 texels)
+    float step;   // map texels per texel of the first level (a power of two)
 } push;
 
 #include "shadow_pcf.glsl.inc"
 
 shared float block[16 * 16];
 
-// The sunlight at the ground point under the map's texel `texel` (as sunlight() in shading.glsl.inc
-// computes it for that point: beyond the map's depth range, lit).
+// The sunlight at the ground point under the first level's texel `texel` (as sunlight() in
+// shading.glsl.inc computes it for that point: beyond the map's depth range, lit), its filter widened to
+// the texel's footprint in the map.
 float groundSunlightAt(uvec2 texel) {
     const vec2 uv = (vec2(texel) + 0.5) / float(push.size);
     const mat4 m = push.lightViewProjection;
@@ -36,7 +40,7 @@ float groundSunlightAt(uvec2 texel) {
     const vec2 xz = inverse(mat2(m[0].xy, m[2].xy)) * (uv * 2.0 - 1.0 - m[3].xy);
     const float depth = m[0].z * xz.x + m[2].z * xz.y + m[3].z;
     if (depth > 1.0) return 1.0;
-    return shadowMapSunlight(shadowMap, uv, depth - push.shadow.y, push.shadow.z);
+    return shadowMapSunlight(shadowMap, uv, depth - push.shadow.y, push.shadow.z * push.step);
 }
 
 // Level k's texel of this thread (k >= 1, the threads of the block's first 16 >> k rows and columns):

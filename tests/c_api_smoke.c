@@ -290,8 +290,35 @@ int main(void) {
     crowdgpu_renderer_settings_default(&settings);
     EXPECT(settings.color_format == VK_FORMAT_R8G8B8A8_SRGB && settings.depth_format == VK_FORMAT_D32_SFLOAT,
            "default formats %d, %d", settings.color_format, settings.depth_format);
+    EXPECT(settings.raster == CROWDGPU_RASTER_AUTO && settings.mesh_raster_limit == -1.0f && settings.shadow_lod &&
+               settings.shadow_raster_compute && settings.impostor_blend && settings.lod_fade && settings.events &&
+               settings.event_capacity == 65536,
+           "default raster %d, mesh raster limit %g, shadow LOD %d, shadow raster compute %d, impostor blend %d, "
+           "fades %d, events %d (%u)", settings.raster, settings.mesh_raster_limit, settings.shadow_lod,
+           settings.shadow_raster_compute, settings.impostor_blend, settings.lod_fade, settings.events,
+           settings.event_capacity);
     settings.frames_in_flight = FRAMES_IN_FLIGHT;
     const crowdgpu_device lent = {instance, physical, device, family, &features};
+
+    /* The settings the C++ API checks reach it: each bad one refused in one line naming it. */
+    {
+        crowdgpu_renderer refused = NULL;
+        crowdgpu_renderer_settings bad = settings;
+        bad.raster = (crowdgpu_raster)7;
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "raster mode 7") != NULL && refused == NULL,
+               "raster 7: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.mesh_raster_limit = -5.0f;
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "mesh raster limit") != NULL,
+               "mesh raster limit -5: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.event_capacity = 0;
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "event capacity") != NULL,
+               "event capacity 0: %s", crowdgpu_last_error());
+    }
 
     /* A NULL argument: INVALID_ARGUMENT and a message. */
     crowdgpu_renderer renderer = NULL;

@@ -148,6 +148,14 @@ typedef enum crowdgpu_method {
     CROWDGPU_STATIC = 5
 } crowdgpu_method;
 
+/* Which rasterizer draws impostors and small characters' meshes (crowdgpu::Raster, docs/compute-raster.md). */
+typedef enum crowdgpu_raster {
+    CROWDGPU_RASTER_HARDWARE = 0,
+    CROWDGPU_RASTER_COMPUTE = 1,
+    CROWDGPU_RASTER_AUTO = 2
+} crowdgpu_raster;
+
+/* Each field as crowdgpu::RendererSettings' of the same name (include/crowdgpu/renderer.hpp). */
 typedef struct crowdgpu_renderer_settings {
     VkFormat color_format, depth_format;
     VkSampleCountFlagBits samples;
@@ -155,9 +163,18 @@ typedef struct crowdgpu_renderer_settings {
     bool gpu_animation, lod, impostors, shadows;
     float impostor_threshold;
     uint32_t mesh_capacity, shadow_map_size, frames_in_flight;
+    crowdgpu_raster raster;
+    float mesh_raster_limit;   /* -1: automatic; 0: meshes never in compute; > 0: that many pixels */
+    bool shadow_lod;           /* casters at a level from their size in the shadow map */
+    bool shadow_raster_compute; /* the shadow map's mesh casters rasterized in compute (else hardware) */
+    bool impostor_blend;       /* impostors blend views, bands and frames (else the nearest cell) */
+    bool lod_fade;             /* level changes fade over a dithered band (else switch at once) */
+    bool events;               /* animation events of the characters in view, in the frame's output */
+    uint32_t event_capacity;
 } crowdgpu_renderer_settings;
 
-/* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows. */
+/* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows (casters
+   at their shadow level, rasterized in compute), raster auto, impostor blend, fades, events. */
 void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* settings);
 
 typedef struct crowdgpu_frame_view {

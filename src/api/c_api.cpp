@@ -60,6 +60,14 @@ crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     r.shadows = s.shadows;
     r.shadowMapSize = s.shadow_map_size;
     r.framesInFlight = s.frames_in_flight;
+    r.raster = static_cast<crowdgpu::Raster>(s.raster);
+    r.meshRasterLimit = s.mesh_raster_limit;
+    r.shadowLod = s.shadow_lod;
+    r.shadowRaster = s.shadow_raster_compute ? crowdgpu::ShadowRaster::Compute : crowdgpu::ShadowRaster::Hardware;
+    r.impostorBlend = s.impostor_blend;
+    r.lodFade = s.lod_fade;
+    r.events = s.events;
+    r.eventCapacity = s.event_capacity;
     return r;
 }
 
@@ -264,6 +272,14 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
     s->mesh_capacity = d.meshCapacity;
     s->shadow_map_size = d.shadowMapSize;
     s->frames_in_flight = d.framesInFlight;
+    s->raster = static_cast<crowdgpu_raster>(d.raster);
+    s->mesh_raster_limit = d.meshRasterLimit;
+    s->shadow_lod = d.shadowLod;
+    s->shadow_raster_compute = d.shadowRaster == crowdgpu::ShadowRaster::Compute;
+    s->impostor_blend = d.impostorBlend;
+    s->lod_fade = d.lodFade;
+    s->events = d.events;
+    s->event_capacity = d.eventCapacity;
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,

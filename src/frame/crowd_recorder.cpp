@@ -249,9 +249,11 @@ void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& 
     const render::Camera camera = render::cameraOf(view);
     const glm::mat4 light = lightOf(view);
     scene_.updateLight(slot, render::makeSceneUniforms(light, pool_.palette(), pool_.texturedMaterials(), 0.0f));
-    scene_.update(slot, render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
-                                                  pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f), light,
-                                                  shadows_, shadowMap_.size()));
+    gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
+                                                         pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f),
+                                                         light, shadows_, shadowMap_.size());
+    scene.shadow.w = static_cast<float>(groundSunlight_.firstLevel(view.viewport.extent));
+    scene_.update(slot, scene);
 }
 
 void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
@@ -277,7 +279,8 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push, impostorBlend_);
     if (!compute || impostorDraw_) shadowMap_.endRendering(cmd);
     // The ground's sunlight from the finished map, in compute, for the ground's one fetch a pixel.
-    groundSunlight_.record(cmd, lightOf(views_[slot]), render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()));
+    groundSunlight_.record(cmd, lightOf(views_[slot]), render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
+                           groundSunlight_.firstLevel(views_[slot].viewport.extent));
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
     gpu::passDone(passes_, cmd, "shadow");

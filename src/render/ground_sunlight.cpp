@@ -18,15 +18,23 @@ namespace {
 // a feature the host would have to enable on the device it lends.
 constexpr VkFormat kFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
-// Level 0 and four halvings, made by one dispatch (16x16 blocks in shared memory): a pixel whose
-// footprint spans up to 16 map texels averages them; beyond, on the farthest ground, it aliases.
-constexpr std::uint32_t kMostLevels = 5;
+// A first level and four halvings, made by one dispatch (16x16 blocks in shared memory): a pixel whose
+// footprint spans up to 16 texels of the first level averages them; beyond, on the farthest ground, it
+// aliases.
+constexpr std::uint32_t kLevelsADispatch = 5;
+// The first level is at most this far below the map's resolution (for small viewports).
+constexpr std::uint32_t kMostFirstLevel = 3;
+
+std::uint32_t levelsFor(std::uint32_t size) {
+    return std::min(kMostFirstLevel + kLevelsADispatch, static_cast<std::uint32_t>(std::bit_width(size)));
+}
 
 struct Push {
     glm::mat4 lightViewProjection;
     glm::vec4 shadow;
     std::uint32_t size;
     std::uint32_t levels;
+    float step;
 };
 
 VkImageView createView(const gpu::VulkanContext& context, VkImage image, std::uint32_t firstLevel,
@@ -58,7 +66,7 @@ void writeImage(const gpu::VulkanContext& context, VkDescriptorSet set, std::uin
 GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMap& map)
     : context_(context),
       size_(map.size()),
-      levels_(std::min(kMostLevels, static_cast<std::uint32_t>(std::bit_width(map.size())))) {
+      levels_(levelsFor(map.size())) {
     try {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
@@ -85,21 +93,26 @@ GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMa
         samplerInfo.maxLod = static_cast<float>(levels_ - 1);
         VK_CHECK(vkCreateSampler(context.device, &samplerInfo, nullptr, &sampler_));
 
-        VkDescriptorSetLayoutBinding bindings[1 + kMostLevels];
+        VkDescriptorSetLayoutBinding bindings[1 + kLevelsADispatch];
         bindings[0] = {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-        for (std::uint32_t level = 0; level < kMostLevels; ++level)
+        for (std::uint32_t level = 0; level < kLevelsADispatch; ++level)
             bindings[1 + level] = {1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
         setLayout_ = gpu::createSetLayout(context, bindings);
-        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
-                                               {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kMostLevels}};
-        pool_ = gpu::createDescriptorPool(context, sizes, 1);
-        set_ = gpu::allocateSet(context, pool_, setLayout_);
-        writeImage(context, set_, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(), map.view(),
-                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-        // A map too small for every level binds its last level in the others' places (never written).
-        for (std::uint32_t level = 0; level < kMostLevels; ++level)
-            writeImage(context, set_, 1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
-                       levelViews_[std::min(level, levels_ - 1)], VK_IMAGE_LAYOUT_GENERAL);
+        // One set for each first level: its level and the four below it.
+        const std::uint32_t firsts = std::min(kMostFirstLevel, levels_ - 1) + 1;
+        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, firsts},
+                                               {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kLevelsADispatch * firsts}};
+        pool_ = gpu::createDescriptorPool(context, sizes, firsts);
+        for (std::uint32_t first = 0; first < firsts; ++first) {
+            const VkDescriptorSet set = gpu::allocateSet(context, pool_, setLayout_);
+            writeImage(context, set, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(), map.view(),
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            // Past the image's last level, that level again (never written: `levels` stops short).
+            for (std::uint32_t level = 0; level < kLevelsADispatch; ++level)
+                writeImage(context, set, 1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
+                           levelViews_[std::min(first + level, levels_ - 1)], VK_IMAGE_LAYOUT_GENERAL);
+            sets_.push_back(set);
+        }
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
         layout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
         pipeline_ = gpu::createComputePipeline(context, ground_sunlight_comp_spv, layout_, {});
@@ -113,9 +126,8 @@ GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMa
 GroundSunlight::~GroundSunlight() { release(); }
 
 std::uint64_t GroundSunlight::bytesFor(std::uint32_t size) {
-    const std::uint32_t levels = std::min(kMostLevels, static_cast<std::uint32_t>(std::bit_width(size)));
     std::uint64_t bytes = 0;
-    for (std::uint32_t level = 0; level < levels; ++level) {
+    for (std::uint32_t level = 0; level < levelsFor(size); ++level) {
         const std::uint64_t side = std::max(size >> level, 1u);
         bytes += side * side * 4;  // RGBA8
     }
@@ -143,18 +155,29 @@ void GroundSunlight::release() {
     memory_ = VK_NULL_HANDLE;
 }
 
+std::uint32_t GroundSunlight::firstLevel(VkExtent2D viewport) const {
+    // A level with at least two texels a pixel along the viewport's longer side shows all a pixel can.
+    const std::uint32_t side = std::max(viewport.width, viewport.height);
+    std::uint32_t first = 0;
+    while (first < kMostFirstLevel && first + 1 < levels_ && (size_ >> (first + 1)) >= 2 * side) ++first;
+    return first;
+}
+
 void GroundSunlight::record(VkCommandBuffer cmd, const glm::mat4& lightViewProjection, float depthBias,
-                            float texel) const {
+                            float texel, std::uint32_t first) const {
     const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1};
     constexpr gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
     // The previous frame's ground must be done sampling before the levels are written again.
     gpu::imageBarrier(cmd, image_, all, {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0}, computeWrite,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
-    const Push push{lightViewProjection, glm::vec4(0.0f, depthBias, texel, 0.0f), size_, levels_};
+    first = std::min(first, static_cast<std::uint32_t>(sets_.size() - 1));
+    const std::uint32_t side = std::max(size_ >> first, 1u);
+    const Push push{lightViewProjection, glm::vec4(0.0f, depthBias, texel, 0.0f), side,
+                    std::min(kLevelsADispatch, levels_ - first), static_cast<float>(1u << first)};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[first], 0, nullptr);
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-    const std::uint32_t blocks = (size_ + 15) / 16;
+    const std::uint32_t blocks = (side + 15) / 16;
     vkCmdDispatch(cmd, blocks, blocks, 1);
     gpu::imageBarrier(cmd, image_, all, computeWrite,
                       {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},

@@ -25,9 +25,16 @@ public:
     GroundSunlight(const GroundSunlight&) = delete;
     GroundSunlight& operator=(const GroundSunlight&) = delete;
 
-    // After the shadow map is drawn and ready to sample (ShadowMap::endRendering): every level, left
-    // ready for the fragment shaders. `depthBias` and `texel` as SceneUniforms::shadow's y and z.
-    void record(VkCommandBuffer cmd, const glm::mat4& lightViewProjection, float depthBias, float texel) const;
+    // The first level worth making for a viewport: the map's resolution, or up to three levels below it
+    // while that still has two texels a pixel along the viewport's longer side (a small viewport cannot
+    // show more, and on a CPU rasterizer the full level costs most of the frame). The ground never
+    // samples finer than it (SceneUniforms::shadow.w).
+    std::uint32_t firstLevel(VkExtent2D viewport) const;
+    // After the shadow map is drawn and ready to sample (ShadowMap::endRendering): the first level and the
+    // four below it, left ready for the fragment shaders. `depthBias` and `texel` as SceneUniforms::
+    // shadow's y and z.
+    void record(VkCommandBuffer cmd, const glm::mat4& lightViewProjection, float depthBias, float texel,
+                std::uint32_t firstLevel) const;
     // Shadows off: all lit, ready to sample (bound to the ground's pipeline, never read).
     void recordAllLit(VkCommandBuffer cmd) const;
     VkImageView view() const { return view_; }
@@ -49,7 +56,7 @@ private:
     VkSampler sampler_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    std::vector<VkDescriptorSet> sets_;  // one for each first level
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
