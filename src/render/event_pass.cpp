@@ -9,6 +9,7 @@
 #include "crowd/epoch.h"
 #include "crowd/event_pairs.h"
 #include "crowd/segment.h"
+#include "event_starts_scatter.comp.spv.h"
 #include "events.comp.spv.h"
 #include "gpu/barriers.h"
 #include "gpu/pipeline.h"
@@ -91,6 +92,25 @@ std::uint32_t previousCapacityFor(const crowd::Crowd& crowd, std::uint32_t capac
 
 }  // namespace
 
+namespace {
+
+// The most changed characters' starts a frame scatters (1 MiB of indices a frame slot); a frame with
+// more (an epoch restates everyone) restages every start and copies them in one region.
+constexpr std::uint32_t kMostScatteredStarts = 262144;
+// Storage-buffer offsets are aligned to at most 256 bytes (minStorageBufferOffsetAlignment's limit).
+constexpr VkDeviceSize kOffsetAlignment = 256;
+
+std::uint32_t scatterCapacityFor(const crowd::Crowd& crowd) { return std::min(kMostScatteredStarts, std::max(1u, crowd.size())); }
+
+VkDeviceSize alignedUp(VkDeviceSize bytes) { return (bytes + kOffsetAlignment - 1) / kOffsetAlignment * kOffsetAlignment; }
+
+// A frame slot's upload of starts: every character's start, then the scattered ones' indices.
+VkDeviceSize startStagingBytes(const crowd::Crowd& crowd) {
+    return alignedUp(std::max(1u, crowd.size()) * sizeof(float)) + VkDeviceSize{scatterCapacityFor(crowd)} * sizeof(std::uint32_t);
+}
+
+}  // namespace
+
 std::uint64_t EventPass::bytesFor(const crowd::Crowd& crowd, std::uint32_t capacity, std::uint32_t framesInFlight) {
     // The tables eventTables builds: the events of clips that have a length.
     std::uint64_t events = 0;
@@ -101,7 +121,7 @@ std::uint64_t EventPass::bytesFor(const crowd::Crowd& crowd, std::uint32_t capac
            std::max<std::uint64_t>(1, events) * sizeof(gpu::AnimationEvent) + sizeof(gpu::EventHeader) +
            std::uint64_t{capacity} * sizeof(gpu::EventRecord) +
            std::uint64_t{framesInFlight} * previousCapacityFor(crowd, capacity) * sizeof(gpu::PreviousSegment) +
-           (1 + std::uint64_t{framesInFlight}) * std::max(1u, crowd.size()) * sizeof(float);
+           std::max(1u, crowd.size()) * sizeof(float) + std::uint64_t{framesInFlight} * startStagingBytes(crowd);
 }
 
 EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const AnimationPass& animation,
@@ -117,12 +137,20 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
                                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                     gpu::MemoryUse::DeviceLocal, "event buffer");
         const VkDeviceSize startBytes = std::max(1u, crowd.size()) * sizeof(float);
+        scatterOffset_ = alignedUp(startBytes);
+        scatterCapacity_ = scatterCapacityFor(crowd);
         segmentStarts_ = gpu::createBuffer(context, startBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            gpu::MemoryUse::DeviceLocal, "segment starts (events)");
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         for (std::uint32_t i = 0; i < framesInFlight; ++i) {
-            startStaging_.push_back(gpu::createBuffer(context, startBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+            startStaging_.push_back(gpu::createBuffer(context, startStagingBytes(crowd),
+                                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                                       gpu::MemoryUse::HostUpload, "segment starts (events, upload)"));
+            const gpu::BufferBinding scatterBindings[] = {
+                {storage, startStaging_.back().buffer, 0, startBytes},
+                {storage, startStaging_.back().buffer, scatterOffset_, VkDeviceSize{scatterCapacity_} * sizeof(std::uint32_t)},
+                {storage, segmentStarts_.buffer}};
+            scatterSets_.push_back(std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, scatterBindings));
             previous_.push_back(gpu::createBuffer(context, previousCapacity_ * sizeof(gpu::PreviousSegment),
                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::HostUpload,
                                                   "previous segments (events)"));
@@ -144,6 +172,10 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::EventPush)};
         layout_ = gpu::createPipelineLayout(context, {&setLayout, 1}, {&push, 1});
         pipeline_ = gpu::createComputePipeline(context, events_comp_spv, layout_, {});
+        const VkDescriptorSetLayout scatterLayout = scatterSets_.front()->layout();
+        const VkPushConstantRange scatterPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::MotionPush)};
+        scatterLayout_ = gpu::createPipelineLayout(context, {&scatterLayout, 1}, {&scatterPush, 1});
+        scatter_ = gpu::createComputePipeline(context, event_starts_scatter_comp_spv, scatterLayout_, {});
     } catch (...) {
         release();
         throw;
@@ -153,11 +185,14 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
 EventPass::~EventPass() { release(); }
 
 void EventPass::release() {
-    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
-    pipeline_ = VK_NULL_HANDLE;
-    layout_ = VK_NULL_HANDLE;
+    for (VkPipeline pipeline : {pipeline_, scatter_})
+        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
+    for (VkPipelineLayout layout : {layout_, scatterLayout_})
+        if (layout) vkDestroyPipelineLayout(context_.device, layout, nullptr);
+    pipeline_ = scatter_ = VK_NULL_HANDLE;
+    layout_ = scatterLayout_ = VK_NULL_HANDLE;
     sets_.clear();
+    scatterSets_.clear();
     for (gpu::Buffer& b : previous_) gpu::destroyBuffer(context_, b);
     previous_.clear();
     for (gpu::Buffer& b : startStaging_) gpu::destroyBuffer(context_, b);
@@ -193,21 +228,20 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
     if (noAdvance) return 0;
     auto* table = static_cast<gpu::PreviousSegment*>(previous_[frameSlot].mapped);
     auto* starts = static_cast<float*>(startStaging_[frameSlot].mapped);
+    auto* indices = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(startStaging_[frameSlot].mapped) + scatterOffset_);
     std::uint32_t count = 0, staged = 0;
     const double epoch = crowd_.epoch();
-    startCopies_.clear();
+    // A few changed characters: their starts and indices, scattered; everyone (or more than the
+    // scatter holds): every start in place, one copy.
+    const bool everyone = !oneAdvance || crowd_.lastChanged().size() > scatterCapacity_;
     auto consider = [&](std::uint32_t c) {
         const crowd::Segment& current = crowd_.plans()[c];
-        starts[staged] = static_cast<float>(current.start - epoch);
-        // One copy per run of consecutive characters (the crowd lists them in order; after an epoch,
-        // everyone: one copy).
-        const VkDeviceSize source = VkDeviceSize{staged} * sizeof(float), target = VkDeviceSize{c} * sizeof(float);
-        if (!startCopies_.empty() && startCopies_.back().srcOffset + startCopies_.back().size == source &&
-            startCopies_.back().dstOffset + startCopies_.back().size == target)
-            startCopies_.back().size += sizeof(float);
-        else
-            startCopies_.push_back({source, target, sizeof(float)});
-        ++staged;
+        if (everyone) {
+            starts[c] = static_cast<float>(current.start - epoch);
+        } else {
+            starts[staged] = static_cast<float>(current.start - epoch);
+            indices[staged++] = c;
+        }
         // Replanned after `from`: what it did before, from what the crowd still knows
         // (Crowd::knownFrom) to that start, is its previous segment.
         const double knownFrom = crowd_.knownFrom(c);
@@ -218,23 +252,35 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
                           glm::vec4(static_cast<float>(knownFrom - epoch), static_cast<float>(current.start - epoch), 0.0f, 0.0f),
                           glm::uvec4(c, 0u, 0u, 0u)};
     };
-    if (oneAdvance) {
-        for (std::uint32_t c : crowd_.lastChanged()) consider(c);
-    } else {
+    if (everyone) {
         for (std::uint32_t c = 0; c < crowd_.size(); ++c) consider(c);
+    } else {
+        for (std::uint32_t c : crowd_.lastChanged()) consider(c);
     }
-    if (!startCopies_.empty()) {
-        // The last frames' event passes are done reading the starts this copy overwrites, and the last
-        // copy is done writing them.
-        gpu::memoryBarrier(cmd,
-                           {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                           {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-        vkCmdCopyBuffer(cmd, startStaging_[frameSlot].buffer, segmentStarts_.buffer,
-                        static_cast<std::uint32_t>(startCopies_.size()), startCopies_.data());
-        gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                           {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+    if (!everyone && staged == 0) return count;
+    // The last frames' event passes are done reading the starts this overwrites, and the last copy or
+    // scatter is done writing them.
+    constexpr gpu::Access copyWrite{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    constexpr gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+    const gpu::Access writer = everyone ? copyWrite : computeWrite;
+    gpu::memoryBarrier(cmd,
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                            VK_ACCESS_2_TRANSFER_WRITE_BIT},
+                       writer);
+    if (everyone) {
+        const VkBufferCopy all{0, 0, VkDeviceSize{crowd_.size()} * sizeof(float)};
+        vkCmdCopyBuffer(cmd, startStaging_[frameSlot].buffer, segmentStarts_.buffer, 1, &all);
+    } else {
+        const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
+        const gpu::MotionPush push{glm::uvec4(staged, 0u, 0u, 0u), glm::vec4(0.0f)};
+        const VkDescriptorSet set = scatterSets_[frameSlot]->set();
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, scatterLayout_, 0, 1, &set, 0, nullptr);
+        vkCmdPushConstants(cmd, scatterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, scatter_);
+        vkCmdDispatch(cmd, groupsFor(staged, maxGroups), 1, 1);
     }
+    gpu::memoryBarrier(cmd, writer, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
     return count;
 }
 

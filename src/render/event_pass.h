@@ -57,7 +57,7 @@ public:
 
 private:
     // What the crowd's last advance changed, staged for this slot: the true starts of the characters'
-    // current segments (the copy into segmentStarts_ recorded), and the previous segments of those
+    // current segments (their scatter, or a copy of everyone's, into segmentStarts_ recorded), and the previous segments of those
     // replanned inside the window. Returns how many previous segments; `lost`: those past the table.
     std::uint32_t stageChanges(VkCommandBuffer cmd, std::uint32_t frameSlot, double from, std::uint32_t& lost);
     void release();
@@ -71,11 +71,16 @@ private:
     // in a window that crosses it belong to it back to this start.
     gpu::Buffer segmentStarts_;
     std::vector<gpu::Buffer> previous_;  // per frame slot: the replanned characters' previous segments
-    std::vector<gpu::Buffer> startStaging_;  // per frame slot: changed characters' starts
-    std::vector<VkBufferCopy> startCopies_;
+    // Per frame slot: changed characters' starts, then (from scatterOffset_) their indices.
+    std::vector<gpu::Buffer> startStaging_;
+    VkDeviceSize scatterOffset_ = 0;
+    std::uint32_t scatterCapacity_ = 0;  // the most starts a frame scatters; more: all restaged, one copy
     std::vector<std::unique_ptr<gpu::DescriptorBundle>> sets_;
+    std::vector<std::unique_ptr<gpu::DescriptorBundle>> scatterSets_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipelineLayout scatterLayout_ = VK_NULL_HANDLE;
+    VkPipeline scatter_ = VK_NULL_HANDLE;
     bool started_ = false;        // a frame was recorded: previousTime_ holds its time
     double previousTime_ = 0.0;
     static constexpr std::uint64_t kNothing = ~0ull;
