@@ -182,6 +182,18 @@ void writeBufferDescriptor(const VulkanContext& context, VkDescriptorSet set, st
     vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
 }
 
+void writeImageDescriptor(const VulkanContext& context, VkDescriptorSet set, std::uint32_t binding,
+                          VkDescriptorType type, VkSampler sampler, VkImageView view, VkImageLayout layout) {
+    const VkDescriptorImageInfo image{sampler, view, layout};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = type;
+    write.pImageInfo = &image;
+    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
+}
+
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent) { setViewportAndScissor(cmd, {{0, 0}, extent}); }
 
 void setViewportAndScissor(VkCommandBuffer cmd, const VkRect2D& area) {

@@ -54,6 +54,9 @@ VkDescriptorPool createDescriptorPool(const VulkanContext& context, std::span<co
 VkDescriptorSet allocateSet(const VulkanContext& context, VkDescriptorPool pool, VkDescriptorSetLayout layout);
 void writeBufferDescriptor(const VulkanContext& context, VkDescriptorSet set, std::uint32_t binding,
                            VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
+// One image (a combined image sampler: with its sampler; a storage image: sampler null) at `binding`.
+void writeImageDescriptor(const VulkanContext& context, VkDescriptorSet set, std::uint32_t binding,
+                          VkDescriptorType type, VkSampler sampler, VkImageView view, VkImageLayout layout);
 
 void setViewportAndScissor(VkCommandBuffer cmd, VkExtent2D extent);
 void setViewportAndScissor(VkCommandBuffer cmd, const VkRect2D& area);

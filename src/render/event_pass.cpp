@@ -94,9 +94,11 @@ std::uint32_t previousCapacityFor(const crowd::Crowd& crowd, std::uint32_t capac
 
 namespace {
 
-// The most changed characters' starts a frame scatters (1 MiB of indices a frame slot); a frame with
-// more (an epoch restates everyone) restages every start and copies them in one region.
-constexpr std::uint32_t kMostScatteredStarts = 262144;
+// The most changed characters' starts a frame scatters (256 KiB of indices a frame slot; a milling
+// crowd of 1,000,000 replans about 10,000 a frame); a frame with more (an epoch restates everyone)
+// restages every start and copies them in one region. Fixed past 65,536 characters, so memory per
+// character stays linear in the crowd.
+constexpr std::uint32_t kMostScatteredStarts = 65536;
 // Storage-buffer offsets are aligned to at most 256 bytes (minStorageBufferOffsetAlignment's limit).
 constexpr VkDeviceSize kOffsetAlignment = 256;
 
@@ -104,9 +106,12 @@ std::uint32_t scatterCapacityFor(const crowd::Crowd& crowd) { return std::min(kM
 
 VkDeviceSize alignedUp(VkDeviceSize bytes) { return (bytes + kOffsetAlignment - 1) / kOffsetAlignment * kOffsetAlignment; }
 
-// A frame slot's upload of starts: every character's start, then the scattered ones' indices.
+// A frame slot's upload of starts: the scattered ones' indices, then the starts (the changed ones', or
+// every character's in place). Indices first: the starts' offset does not move with the crowd's size.
+VkDeviceSize startsOffsetFor(const crowd::Crowd& crowd) { return alignedUp(VkDeviceSize{scatterCapacityFor(crowd)} * sizeof(std::uint32_t)); }
+
 VkDeviceSize startStagingBytes(const crowd::Crowd& crowd) {
-    return alignedUp(std::max(1u, crowd.size()) * sizeof(float)) + VkDeviceSize{scatterCapacityFor(crowd)} * sizeof(std::uint32_t);
+    return startsOffsetFor(crowd) + std::max(1u, crowd.size()) * sizeof(float);
 }
 
 }  // namespace
@@ -137,7 +142,7 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
                                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                     gpu::MemoryUse::DeviceLocal, "event buffer");
         const VkDeviceSize startBytes = std::max(1u, crowd.size()) * sizeof(float);
-        scatterOffset_ = alignedUp(startBytes);
+        startsOffset_ = startsOffsetFor(crowd);
         scatterCapacity_ = scatterCapacityFor(crowd);
         segmentStarts_ = gpu::createBuffer(context, startBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            gpu::MemoryUse::DeviceLocal, "segment starts (events)");
@@ -147,8 +152,8 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
                                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                                       gpu::MemoryUse::HostUpload, "segment starts (events, upload)"));
             const gpu::BufferBinding scatterBindings[] = {
-                {storage, startStaging_.back().buffer, 0, startBytes},
-                {storage, startStaging_.back().buffer, scatterOffset_, VkDeviceSize{scatterCapacity_} * sizeof(std::uint32_t)},
+                {storage, startStaging_.back().buffer, startsOffset_, startBytes},
+                {storage, startStaging_.back().buffer, 0, VkDeviceSize{scatterCapacity_} * sizeof(std::uint32_t)},
                 {storage, segmentStarts_.buffer}};
             scatterSets_.push_back(std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, scatterBindings));
             previous_.push_back(gpu::createBuffer(context, previousCapacity_ * sizeof(gpu::PreviousSegment),
@@ -227,8 +232,8 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
     lost = 0;
     if (noAdvance) return 0;
     auto* table = static_cast<gpu::PreviousSegment*>(previous_[frameSlot].mapped);
-    auto* starts = static_cast<float*>(startStaging_[frameSlot].mapped);
-    auto* indices = reinterpret_cast<std::uint32_t*>(static_cast<std::byte*>(startStaging_[frameSlot].mapped) + scatterOffset_);
+    auto* indices = static_cast<std::uint32_t*>(startStaging_[frameSlot].mapped);
+    auto* starts = reinterpret_cast<float*>(static_cast<std::byte*>(startStaging_[frameSlot].mapped) + startsOffset_);
     std::uint32_t count = 0, staged = 0;
     const double epoch = crowd_.epoch();
     // A few changed characters: their starts and indices, scattered; everyone (or more than the
@@ -269,7 +274,7 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
                             VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        writer);
     if (everyone) {
-        const VkBufferCopy all{0, 0, VkDeviceSize{crowd_.size()} * sizeof(float)};
+        const VkBufferCopy all{startsOffset_, 0, VkDeviceSize{crowd_.size()} * sizeof(float)};
         vkCmdCopyBuffer(cmd, startStaging_[frameSlot].buffer, segmentStarts_.buffer, 1, &all);
     } else {
         const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];

@@ -71,9 +71,9 @@ private:
     // in a window that crosses it belong to it back to this start.
     gpu::Buffer segmentStarts_;
     std::vector<gpu::Buffer> previous_;  // per frame slot: the replanned characters' previous segments
-    // Per frame slot: changed characters' starts, then (from scatterOffset_) their indices.
+    // Per frame slot: the scattered characters' indices, then (from startsOffset_) the starts.
     std::vector<gpu::Buffer> startStaging_;
-    VkDeviceSize scatterOffset_ = 0;
+    VkDeviceSize startsOffset_ = 0;
     std::uint32_t scatterCapacity_ = 0;  // the most starts a frame scatters; more: all restaged, one copy
     std::vector<std::unique_ptr<gpu::DescriptorBundle>> sets_;
     std::vector<std::unique_ptr<gpu::DescriptorBundle>> scatterSets_;

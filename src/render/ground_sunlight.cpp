@@ -49,17 +49,6 @@ VkImageView createView(const gpu::VulkanContext& context, VkImage image, std::ui
     return view;
 }
 
-void writeImage(const gpu::VulkanContext& context, VkDescriptorSet set, std::uint32_t binding, VkDescriptorType type,
-                VkSampler sampler, VkImageView view, VkImageLayout layout) {
-    const VkDescriptorImageInfo image{sampler, view, layout};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set;
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = type;
-    write.pImageInfo = &image;
-    vkUpdateDescriptorSets(context.device, 1, &write, 0, nullptr);
-}
 
 }  // namespace
 
@@ -105,12 +94,12 @@ GroundSunlight::GroundSunlight(const gpu::VulkanContext& context, const ShadowMa
         pool_ = gpu::createDescriptorPool(context, sizes, firsts);
         for (std::uint32_t first = 0; first < firsts; ++first) {
             const VkDescriptorSet set = gpu::allocateSet(context, pool_, setLayout_);
-            writeImage(context, set, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(), map.view(),
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            gpu::writeImageDescriptor(context, set, 0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, map.sampler(),
+                                      map.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
             // Past the image's last level, that level again (never written: `levels` stops short).
             for (std::uint32_t level = 0; level < kLevelsADispatch; ++level)
-                writeImage(context, set, 1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
-                           levelViews_[std::min(first + level, levels_ - 1)], VK_IMAGE_LAYOUT_GENERAL);
+                gpu::writeImageDescriptor(context, set, 1 + level, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_NULL_HANDLE,
+                                          levelViews_[std::min(first + level, levels_ - 1)], VK_IMAGE_LAYOUT_GENERAL);
             sets_.push_back(set);
         }
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};

@@ -41,8 +41,11 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         writeTextures(sets_.back(), pool);
         gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                    pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
-        writeImage(sets_.back(), 3, shadowMap.sampler(), shadowMap.view());
-        writeImage(sets_.back(), 4, groundSunlight.sampler(), groundSunlight.view());
+        constexpr VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        constexpr VkImageLayout readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        gpu::writeImageDescriptor(context, sets_.back(), 3, sampled, shadowMap.sampler(), shadowMap.view(), readOnly);
+        gpu::writeImageDescriptor(context, sets_.back(), 4, sampled, groundSunlight.sampler(), groundSunlight.view(),
+                                  readOnly);
     }
     const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(ScenePush)};
     groundLayout_ = gpu::createPipelineLayout(context, {&setLayout_, 1}, {&push, 1});
@@ -88,16 +91,6 @@ void ScenePass::updateLight(std::uint32_t frameSlot, const gpu::SceneUniforms& u
     std::memcpy(uniforms_[uniforms_.size() / 2 + frameSlot].mapped, &uniforms, sizeof uniforms);
 }
 
-void ScenePass::writeImage(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler, VkImageView view) const {
-    const VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set;
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &image;
-    vkUpdateDescriptorSets(context_.device, 1, &write, 0, nullptr);
-}
 
 void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundPipeline_);

@@ -58,7 +58,6 @@ public:
 
 private:
     void writeTextures(VkDescriptorSet set, const GeometryPool& pool) const;
-    void writeImage(VkDescriptorSet set, std::uint32_t binding, VkSampler sampler, VkImageView view) const;
 
     const gpu::VulkanContext& context_;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
