@@ -29,14 +29,6 @@ struct MeshFrame {
     gpu::MeshSplit split{};
 };
 
-template <typename T>
-std::vector<T> readAll(const gpu::VulkanContext& context, const gpu::Buffer& buffer) {
-    const std::vector<std::byte> bytes = test::readBuffer(context, buffer);
-    std::vector<T> out(bytes.size() / sizeof(T));
-    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
-    return out;
-}
-
 MeshFrame renderFrame(const gpu::VulkanContext& context, test::TestRenderer& renderer, double time) {
     renderer.renderFrame(time);
     renderer.finish();
@@ -45,8 +37,8 @@ MeshFrame renderFrame(const gpu::VulkanContext& context, test::TestRenderer& ren
     frame.image = renderer.readback();
     const render::MeshRaster* raster = renderer.recorder().meshRaster();
     if (raster && renderer.recorder().meshesInComputeThisFrame(0)) {
-        frame.visibility = readAll<std::uint64_t>(context, raster->visibility(0));
-        frame.split = readAll<gpu::MeshSplit>(context, raster->split()).at(0);
+        frame.visibility = test::readAll<std::uint64_t>(context, raster->visibility(0));
+        frame.split = test::readAll<gpu::MeshSplit>(context, raster->split()).at(0);
     }
     return frame;
 }
@@ -155,8 +147,8 @@ TEST_F(GpuTest, MeshVisibilityIdsDecodeToTheCharacterAndTriangle) {
     const MeshFrame frame = renderFrame(*context, renderer, 1.3);
     ASSERT_EQ(frame.split.computeCount, 5u);
     const render::MeshRaster& raster = *renderer.recorder().meshRaster();
-    const std::vector<std::uint32_t> listed = readAll<std::uint32_t>(*context, raster.list());
-    const std::vector<gpu::DrawIndexedCommand> draws = readAll<gpu::DrawIndexedCommand>(*context, renderer.drawLists().draws());
+    const std::vector<std::uint32_t> listed = test::readAll<std::uint32_t>(*context, raster.list());
+    const std::vector<gpu::DrawIndexedCommand> draws = test::readAll<gpu::DrawIndexedCommand>(*context, renderer.drawLists().draws());
     // The pool's indices, from the model's levels (one model: its levels lie at the record's first indices).
     const gpu::ModelRecord record = renderer.pool().models().at(0);
     const std::vector<model::SkinnedModel::Lod> lods = render::lodsOf(soldier);
@@ -294,8 +286,8 @@ TEST_F(GpuTest, MeshRasterFollowsTheTopLeftRule) {
     const MeshFrame c = renderFrame(*context, compute, 0.0);
     ASSERT_EQ(c.split.computeCount, 1u);
     const render::MeshRaster& raster = *compute.recorder().meshRaster();
-    const std::vector<std::uint32_t> listed = readAll<std::uint32_t>(*context, raster.list());
-    const gpu::DrawIndexedCommand command = readAll<gpu::DrawIndexedCommand>(*context, compute.drawLists().draws()).at(listed.at(0));
+    const std::vector<std::uint32_t> listed = test::readAll<std::uint32_t>(*context, raster.list());
+    const gpu::DrawIndexedCommand command = test::readAll<gpu::DrawIndexedCommand>(*context, compute.drawLists().draws()).at(listed.at(0));
     const gpu::ModelRecord record = compute.pool().models().at(0);
     const std::vector<model::SkinnedModel::Lod> lods = render::lodsOf(strip);
     ASSERT_EQ(command.firstIndex, record.lodFirstIndex[0]);

@@ -21,14 +21,6 @@ using test::GpuTest;
 constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
 constexpr VkExtent2D kSize{240, 160};
 
-template <typename T>
-std::vector<T> readAll(const gpu::VulkanContext& context, const gpu::Buffer& buffer) {
-    const std::vector<std::byte> bytes = test::readBuffer(context, buffer);
-    std::vector<T> out(bytes.size() / sizeof(T));
-    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
-    return out;
-}
-
 // Tiles (x | y << 16) of `tile` pixels a side holding a drawn word of a visibility buffer, on the CPU.
 std::set<std::uint32_t> coveredTiles(const std::vector<std::uint64_t>& visibility, VkExtent2D extent, std::uint32_t tile) {
     std::set<std::uint32_t> tiles;
@@ -44,7 +36,7 @@ struct TileList {
     std::vector<std::uint32_t> tiles;
 };
 TileList readTiles(const gpu::VulkanContext& context, const render::VisibilityTiles& tiles) {
-    const std::vector<std::uint32_t> words = readAll<std::uint32_t>(context, tiles.list(0));
+    const std::vector<std::uint32_t> words = test::readAll<std::uint32_t>(context, tiles.list(0));
     TileList list;
     std::memcpy(&list.header, words.data(), sizeof list.header);
     const std::size_t first = sizeof list.header / 4;
@@ -58,7 +50,7 @@ TileList readTiles(const gpu::VulkanContext& context, const render::VisibilityTi
 // how many tiles are covered.
 std::size_t expectListedTilesAreCovered(const gpu::VulkanContext& context, const render::VisibilityTiles& tiles,
                                         const gpu::Buffer& visibility, const char* what) {
-    const std::set<std::uint32_t> covered = coveredTiles(readAll<std::uint64_t>(context, visibility), kSize, tiles.tilePixels());
+    const std::set<std::uint32_t> covered = coveredTiles(test::readAll<std::uint64_t>(context, visibility), kSize, tiles.tilePixels());
     const TileList list = readTiles(context, tiles);
     EXPECT_EQ(list.header.vertexCount, 6u) << what;
     EXPECT_EQ(list.header.firstVertex, 0u) << what;
@@ -148,8 +140,8 @@ TEST_F(GpuTest, ResolveTilesAreTheTilesTheRasterizersDrewInto) {
         const frame::CrowdRecorder& recorder = scene.renderer.recorder();
         ASSERT_EQ(scene.lods.impostors, 4u);
         ASSERT_TRUE(recorder.meshesInComputeThisFrame(0));
-        const auto meshSplit = readAll<gpu::MeshSplit>(*context, recorder.meshRaster()->split()).at(0);
-        const auto impostorSplit = readAll<gpu::ImpostorSplit>(*context, recorder.impostorRaster()->split()).at(0);
+        const auto meshSplit = test::readAll<gpu::MeshSplit>(*context, recorder.meshRaster()->split()).at(0);
+        const auto impostorSplit = test::readAll<gpu::ImpostorSplit>(*context, recorder.impostorRaster()->split()).at(0);
         EXPECT_EQ(meshSplit.computeCount, 3u);
         EXPECT_EQ(impostorSplit.computeCount, 4u);
         ASSERT_NE(recorder.impostorRaster()->tiles(), nullptr);

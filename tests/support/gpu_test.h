@@ -1,6 +1,7 @@
 #pragma once
 // Test support for GPU tests: a Vulkan context with the Khronos validation layer and
 // synchronization validation; any validation message during a test fails it.
+#include <cstring>
 #include <map>
 #include <memory>
 #include <vector>
@@ -100,6 +101,14 @@ std::vector<std::uint32_t> differ(const std::vector<std::uint32_t>& a, const std
 
 // A device buffer's bytes, copied to the host.
 std::vector<std::byte> readBuffer(const gpu::VulkanContext& context, const gpu::Buffer& buffer);
+// The same as whole elements of T.
+template <typename T>
+std::vector<T> readAll(const gpu::VulkanContext& context, const gpu::Buffer& buffer) {
+    const std::vector<std::byte> bytes = readBuffer(context, buffer);
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+}
 
 // The last frame's visible lists, per bucket, sorted (the GPU's atomics append in any order).
 crowd::VisibleLists readVisibleLists(const gpu::VulkanContext& context, const TestRenderer& renderer);
