@@ -36,7 +36,7 @@ using uint = std::uint32_t;
 // vertices, or its impostor) on the others (shaders/fade_dither.glsl.inc). FADE_STEPS is the dither's
 // number of thresholds: a finer share would draw the same pixels.
 #define FADE_SHIFT 16u
-#define FADE_STEPS 16u
+#define FADE_STEPS 64u
 // Threads per workgroup of the cull, emit and skinning compute passes.
 #define CULL_WORKGROUP_SIZE 64
 
