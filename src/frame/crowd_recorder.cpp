@@ -262,9 +262,10 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
     const render::Camera camera = render::cameraOf(views_[slot]);
     const bool compute = rastersShadowsInCompute();
+    const glm::mat4 light = lightOf(views_[slot]);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     if (compute) {
-        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), lightOf(views_[slot]));
+        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), light);
         shadowMap_.copyFrom(cmd, shadowRaster_->depth());
         if (impostorDraw_)
             shadowMap_.beginRenderingOver(cmd);
@@ -279,7 +280,7 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push, impostorBlend_);
     if (!compute || impostorDraw_) shadowMap_.endRendering(cmd);
     // The ground's sunlight from the finished map, in compute, for the ground's one fetch a pixel.
-    groundSunlight_.record(cmd, lightOf(views_[slot]), render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
+    groundSunlight_.record(cmd, light, render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
                            groundSunlight_.firstLevel(views_[slot].viewport.extent));
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;

@@ -74,6 +74,21 @@ void destroyImage(const HostDevice& device, HostImage& image) {
     image = {};
 }
 
+void copiedForHost(VkCommandBuffer cmd, const ReadbackBuffer& buffer) {
+    VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+    toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+    toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    toHost.srcQueueFamilyIndex = toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    toHost.buffer = buffer.buffer;
+    toHost.size = VK_WHOLE_SIZE;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.bufferMemoryBarrierCount = 1;
+    dependency.pBufferMemoryBarriers = &toHost;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 ReadbackBuffer createReadbackBuffer(const HostDevice& device, VkDeviceSize size, const std::string& what) {
     ReadbackBuffer buffer;
     buffer.size = size;

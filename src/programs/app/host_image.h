@@ -33,6 +33,8 @@ struct ReadbackBuffer {
 // A host-visible, mapped buffer the GPU copies into (transfer destination).
 ReadbackBuffer createReadbackBuffer(const HostDevice& device, VkDeviceSize size, const std::string& what);
 void destroyReadbackBuffer(const HostDevice& device, ReadbackBuffer& buffer);
+// After a copy into the buffer: the host may read it once the command buffer's fence has signalled.
+void copiedForHost(VkCommandBuffer cmd, const ReadbackBuffer& buffer);
 
 // One synchronization2 image barrier over the whole image.
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkPipelineStageFlags2 srcStage,

@@ -30,18 +30,7 @@ void EventMarkers::recordCopy(VkCommandBuffer cmd, const crowdgpu::FrameOutput& 
     // The renderer's own barrier after its event pass makes the buffer readable by any later command.
     const VkBufferCopy region{0, 0, size};
     vkCmdCopyBuffer(cmd, output.events, copy.buffer.buffer, 1, &region);
-    VkBufferMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-    toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-    toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    toHost.srcQueueFamilyIndex = toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toHost.buffer = copy.buffer.buffer;
-    toHost.size = VK_WHOLE_SIZE;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.bufferMemoryBarrierCount = 1;
-    dependency.pBufferMemoryBarriers = &toHost;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    app::copiedForHost(cmd, copy.buffer);
     copy.time = time;
     copy.pending = true;
 }
