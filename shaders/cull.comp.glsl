@@ -24,6 +24,20 @@ void listMeshCandidate(uint c, float size, bool drawnIfDemoted) {
     atomicAdd(meshCutWords[COARSE_HISTOGRAM + coarseBucketOf(candidateKey(candidate))], 1u);
 }
 
+// The shadow cascades whose volumes a sphere reaches, a bit each (gpu_types.h, SHADOW_CASCADE_SHIFT).
+uint cascadesReached(vec4 sphere) {
+    uint reached = 0u;
+    for (uint k = 0u; k < cull.shadowFlags.z; ++k) {
+        bool inside = true;
+        for (uint i = 0u; i < 6u; ++i) {
+            vec4 plane = cull.cascadePlanes[6u * k + i];
+            inside = inside && dot(plane.xyz, sphere.xyz) + plane.w >= -sphere.w;
+        }
+        if (inside) reached |= 1u << k;
+    }
+    return reached;
+}
+
 void cullCharacter(uint c) {
     CharacterRecord character = characters[c];
     vec4 sphere = worldSphere(character, models[character.ids.x]);
@@ -34,7 +48,9 @@ void cullCharacter(uint c) {
     bool fades = cull.flags.z != 0u && cull.fade.x != 0u;
     if (cull.flags.z != 0u) lod = fades ? fadedLod(size, cull.lod) : chooseLod(size, lodState[c], cull.lod);
     lodState[c] = cull.flags.z != 0u ? lod + 1u : 0u;
-    uint shadow = shadowState(sphere, lod, inView, cull.planes, cull.lightPlanes, cull.light.xyz, cull.shadow,
+    uint cascades = cull.limits.y != 0u ? cascadesReached(sphere) : 0u;
+    float texelsPerUnit = cull.cascadeTexels[cascades != 0u ? findLSB(cascades) : 0];
+    uint shadow = shadowState(sphere, lod, inView, cull.planes, cascades, texelsPerUnit, cull.light.xyz, cull.shadow,
                               cull.flags, cull.limits, cull.shadowFlags);
     if (fades) shadow |= fadeShare(size, lod, cull.lod) << FADE_SHIFT;
     shadowStates[c] = shadow;

@@ -29,6 +29,11 @@ using uint = std::uint32_t;
 #define SHADOW_LEVEL_MASK 3u
 #define SHADOW_CASTS_BIT 4u
 #define SHADOW_IN_VIEW_BIT 8u
+// The sun's shadow map holds up to MAX_SHADOW_CASCADES cascades, each a square of it over a stretch of
+// the view's distance (render/shadow_cascades.h). A caster's state word holds, from SHADOW_CASCADE_SHIFT,
+// a bit for each cascade whose volume its sphere reaches: the compute shadow raster draws it there only.
+#define MAX_SHADOW_CASCADES 4
+#define SHADOW_CASCADE_SHIFT 4u
 // The same word's upper half: while a character's size is in the fade band of a threshold (lod-fade,
 // shaders/cull.glsl.inc), the share of the coarser of its two levels in steps of 1/FADE_STEPS (0: not
 // fading). It is drawn at both: the finer (its level, skinned) on the pixels whose screen-space dither
@@ -369,11 +374,15 @@ struct CullUniforms {
                      // z: most characters at a mesh level (LOD 0-2) in a frame, the smallest on screen
                      // beyond it are demoted to impostors (0: no cap), w: unused
     vec4 light;      // xyz: unit vector towards the light (shadow casters), w: unused
-    vec4 lightPlanes[6];  // the shadow map's volume (the light's orthographic view-projection), as planes
-    vec4 shadow;     // x: shadow-map texels per world unit, y: LOD 0 and z: LOD 1 thresholds (a caster's
-                     // sphere diameter in texels), w: below this diameter in texels a caster is not drawn
-    uvec4 shadowFlags;  // x: 1 = shadow LOD (levels from the shadow map; else the view's level),
-                        // y, z, w: unused
+    // Each shadow cascade's volume (its orthographic view-projection), six planes a cascade, the first
+    // shadowFlags.z cascades used.
+    vec4 cascadePlanes[MAX_SHADOW_CASCADES * 6];
+    vec4 cascadeTexels;  // each cascade's shadow-map texels per world unit (x: cascade 0, ...)
+    vec4 shadow;     // x: unused, y: LOD 0 and z: LOD 1 thresholds (a caster's sphere diameter in texels
+                     // of the finest cascade it reaches), w: below this diameter in texels a caster is not drawn
+    uvec4 shadowFlags;  // x: 1 = shadow LOD (levels from the shadow map; else the view's level), y: where
+                        // the shadow lists start (set by CullPass::record, cull_lists.glsl.inc), z: shadow
+                        // cascades (1 to MAX_SHADOW_CASCADES), w: unused
     uvec4 fade;      // x: 1 = a level change fades across the hysteresis band (lod-fade: both levels
                      // drawn, dithered; no hysteresis then), y, z, w: unused
 };
@@ -395,7 +404,17 @@ struct SceneUniforms {
     uvec4 materialFlags;  // bit m of (x, y, z, w)[m / 32] set when material m is multiplied by its
                           // model's base-colour texture
     vec4 palette[MAX_MATERIALS];
-    mat4 lightViewProjection;  // world to the shadow map's clip space
+    // World to the first shadow cascade's clip space (x, y in [-1, 1] over its square; z, the depth, is
+    // every cascade's: they share the light's view and depth range and differ in x, y extents only);
+    // each cascade's clip x, y from the first's (xy: scale, zw: offset; render/shadow_cascades.h), and
+    // where its square lies in the map (xy its corner in uv, z its side in uv, w unused).
+    mat4 shadowLight;
+    vec4 shadowFromFirst[MAX_SHADOW_CASCADES];
+    vec4 shadowSquares[MAX_SHADOW_CASCADES];
+    vec4 shadowCascadeUse;     // x: cascades, y: how far from a cascade's centre (in its clip units) a point
+                               // is its own, leaving the filter's reach inside the square; z, w: unused
+    vec4 shadowView;           // a point's distance along the view: dot(xyz, point) + w
+    vec4 shadowSplits;         // where cascades 0, 1, 2 (x, y, z) end along the view; w: past all
     vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: the ground
                                // sunlight image's first level made this frame (render/ground_sunlight.h)
 };

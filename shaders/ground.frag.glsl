@@ -30,14 +30,28 @@ float oddTileShare(vec2 p) {
 // The sunlight on the ground here: one trilinear fetch of the ground sunlight image, whose texels are
 // the comparisons sunlight() would make at their centres and whose levels average them, so the far
 // ground's shadows are filtered over the pixel's footprint too. Outside the map: lit, as sunlight().
+// The level comes from the ground's footprint in the cascade it falls in (the uv jumps where two
+// cascades meet, so the hardware's derivatives of it would pick a coarse level along the seam), and
+// the fetch stays inside that cascade's square, whose coarse texels would otherwise mix in its neighbour's.
 float groundSunlightAt(vec3 world) {
     if (!kSunlightImage) return sunlight(scene, world);
+    vec3 dx = dFdx(world), dy = dFdy(world);  // before any branch: derivatives need the whole quad
     if (scene.shadow.x == 0.0) return 1.0;
-    vec2 uv = (scene.lightViewProjection * vec4(world, 1.0)).xy * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    if (scene.shadowCascadeUse.x == 1.0) {  // one map over the view, as before cascades (its cost too)
+        vec2 uv = (scene.shadowLight * vec4(world, 1.0)).xy * 0.5 + 0.5;
+        if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+        float lod = clamp(textureQueryLod(groundSunlight, uv).y, scene.shadow.w, scene.shadow.w + 4.0);
+        return textureLod(groundSunlight, uv, lod).r;
+    }
+    ShadowLookup l = shadowLookup(scene, world, dx, dy);
+    if (l.cascade < 0) return 1.0;
+    float texels = float(textureSize(groundSunlight, 0).x);
+    float footprint = max(length(l.uvDx), length(l.uvDy)) * texels;
     // Within the five levels made this frame, from the first (finer ones are a small viewport's leftovers,
     // coarser ones never made).
-    float lod = clamp(textureQueryLod(groundSunlight, uv).y, scene.shadow.w, scene.shadow.w + 4.0);
+    float lod = clamp(log2(max(footprint, 1e-8)), scene.shadow.w, scene.shadow.w + 4.0);
+    float inset = 0.5 * exp2(ceil(lod)) / texels;
+    vec2 uv = clamp(l.uv, l.square.xy + inset, l.square.xy + l.square.z - inset);
     return textureLod(groundSunlight, uv, lod).r;
 }
 

@@ -8,7 +8,8 @@
 // every SM). Each workgroup computes a 16x16 block of the first level and, in shared memory, its means
 // down to one texel four levels below, so the far ground, where a texel is smaller than a pixel,
 // averages its shadows instead of aliasing, in one dispatch (no barrier between levels). The first level
-// is 0 unless the viewport is too small to show the map's texels (render/ground_sunlight.h).
+// is 0 unless the viewport is too small to show the map's texels (render/ground_sunlight.h). With shadow
+// cascades, one dispatch a cascade covers its square of the map (render/shadow_cascades.h).
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(set = 0, binding = 0) uniform sampler2DShadow shadowMap;
@@ -19,11 +20,13 @@ layout(set = 0, binding = 3, rgba8) uniform writeonly image2D level2;
 layout(set = 0, binding = 4, rgba8) uniform writeonly image2D level3;
 layout(set = 0, binding = 5, rgba8) uniform writeonly image2D level4;
 layout(push_constant) uniform Push {
-    mat4 lightViewProjection;
+    mat4 lightViewProjection;  // the cascade's: world to its clip space
     vec4 shadow;  // y: depth bias, z: one texel of the map in uv (as SceneUniforms::shadow)
     uint size;    // the first level's side in texels
     uint levels;  // levels to write (1 to 5: fewer for maps under 16 texels)
     float step;   // map texels per texel of the first level (a power of two)
+    uint side;    // the cascade's square's side in texels of the first level (a multiple of 16, or `size`)
+    uvec2 origin; // its corner, in texels of the first level
 } push;
 
 #include "shadow_pcf.glsl.inc"
@@ -32,15 +35,19 @@ shared float block[16 * 16];
 
 // The sunlight at the ground point under the first level's texel `texel` (as sunlight() in
 // shading.glsl.inc computes it for that point: beyond the map's depth range, lit), its filter widened to
-// the texel's footprint in the map.
+// the texel's footprint in the map and kept inside the cascade's square (its outermost texels, which
+// the shading never takes, would read the neighbouring cascade's).
 float groundSunlightAt(uvec2 texel) {
-    const vec2 uv = (vec2(texel) + 0.5) / float(push.size);
+    const vec2 local = (vec2(texel - push.origin) + 0.5) / float(push.side);
     const mat4 m = push.lightViewProjection;
     // clip.xy = m[0].xy * x + m[2].xy * z + m[3].xy on the plane y = 0: solve for (x, z).
-    const vec2 xz = inverse(mat2(m[0].xy, m[2].xy)) * (uv * 2.0 - 1.0 - m[3].xy);
+    const vec2 xz = inverse(mat2(m[0].xy, m[2].xy)) * (local * 2.0 - 1.0 - m[3].xy);
     const float depth = m[0].z * xz.x + m[2].z * xz.y + m[3].z;
     if (depth > 1.0) return 1.0;
-    return shadowMapSunlight(shadowMap, uv, depth - push.shadow.y, push.shadow.z * push.step);
+    const float reach = push.shadow.z * push.step;  // the filter's, in uv
+    const vec2 lo = vec2(push.origin) / float(push.size) + reach, hi = vec2(push.origin + push.side) / float(push.size) - reach;
+    const vec2 uv = clamp((vec2(texel) + 0.5) / float(push.size), lo, hi);
+    return shadowMapSunlight(shadowMap, uv, depth - push.shadow.y, reach);
 }
 
 // Level k's texel of this thread (k >= 1, the threads of the block's first 16 >> k rows and columns):
@@ -61,14 +68,15 @@ float halve(uint k) {
 
 // Stores level k's texel of this thread where that level has it.
 bool ownsTexel(uint k, out ivec2 texel) {
-    texel = ivec2((gl_WorkGroupID.xy * 16u >> k) + gl_LocalInvocationID.xy);
+    const uvec2 inSquare = (gl_WorkGroupID.xy * 16u >> k) + gl_LocalInvocationID.xy;
+    texel = ivec2((push.origin >> k) + inSquare);
     return k < push.levels && all(lessThan(gl_LocalInvocationID.xy, uvec2(16u >> k))) &&
-           all(lessThan(uvec2(texel), uvec2(max(push.size >> k, 1u))));
+           all(lessThan(inSquare, uvec2(max(push.side >> k, 1u))));
 }
 
 void main() {
-    // Threads past the map's edge take its last texel, so the means near the edge stay defined.
-    const uvec2 texel0 = min(gl_GlobalInvocationID.xy, uvec2(push.size - 1u));
+    // Threads past the square's edge take its last texel, so the means near the edge stay defined.
+    const uvec2 texel0 = push.origin + min(gl_GlobalInvocationID.xy, uvec2(push.side - 1u));
     const float lit = groundSunlightAt(texel0);
     ivec2 texel;
     if (ownsTexel(0u, texel)) imageStore(level0, texel, vec4(lit));

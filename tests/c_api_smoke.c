@@ -292,11 +292,11 @@ int main(void) {
            "default formats %d, %d", settings.color_format, settings.depth_format);
     EXPECT(settings.raster == CROWDGPU_RASTER_AUTO && settings.mesh_raster_limit == -1.0f && settings.shadow_lod &&
                settings.shadow_raster_compute && settings.impostor_blend && settings.lod_fade && settings.events &&
-               settings.event_capacity == 65536,
+               settings.event_capacity == 65536 && settings.shadow_cascades == 1,
            "default raster %d, mesh raster limit %g, shadow LOD %d, shadow raster compute %d, impostor blend %d, "
-           "fades %d, events %d (%u)", settings.raster, settings.mesh_raster_limit, settings.shadow_lod,
-           settings.shadow_raster_compute, settings.impostor_blend, settings.lod_fade, settings.events,
-           settings.event_capacity);
+           "fades %d, events %d (%u), shadow cascades %u", settings.raster, settings.mesh_raster_limit,
+           settings.shadow_lod, settings.shadow_raster_compute, settings.impostor_blend, settings.lod_fade,
+           settings.events, settings.event_capacity, settings.shadow_cascades);
     settings.frames_in_flight = FRAMES_IN_FLIGHT;
     const crowdgpu_device lent = {instance, physical, device, family, &features};
 
@@ -318,6 +318,17 @@ int main(void) {
         EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
                    strstr(crowdgpu_last_error(), "event capacity") != NULL,
                "event capacity 0: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.shadow_cascades = 5;
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "shadow cascades") != NULL,
+               "shadow cascades 5: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.shadow_cascades = 4;
+        bad.shadow_map_size = 32;
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "at least 64 texels") != NULL,
+               "4 cascades in a 32-texel map: %s", crowdgpu_last_error());
     }
 
     /* A NULL argument: INVALID_ARGUMENT and a message. */

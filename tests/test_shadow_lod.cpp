@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <bit>
 #include <set>
 #include <vector>
 
@@ -28,14 +29,16 @@ using test::GpuTest;
 constexpr float kDegree = 3.14159265f / 180.0f;
 
 TEST(ShadowState, LevelFollowsTexelSizeNeverFinerThanTheViewAndTinyCastersAreDropped) {
-    // Planes that hold everything, a shadow map of 10 texels per unit: a unit sphere is 20 texels across.
+    // Planes that hold everything, one cascade of 10 texels per unit: a unit sphere is 20 texels across.
     gpu::CullUniforms u{};
-    for (int i = 0; i < 6; ++i) u.planes[i] = u.lightPlanes[i] = glm::vec4(0, 0, 0, 1e6f);
+    for (int i = 0; i < 6; ++i) u.planes[i] = u.cascadePlanes[i] = glm::vec4(0, 0, 0, 1e6f);
+    u.shadowFlags.z = 1;
+    u.cascadeTexels.x = 10.0f;
     u.flags = glm::uvec4(1, 1, 1, 3);  // culling and LOD on
     u.limits.y = 1;                    // shadows on
     u.light = glm::vec4(0, 1, 0, 0);
     u.shadowFlags.x = 1;               // shadow LOD on
-    u.shadow = glm::vec4(10.0f, 30.0f, 15.0f, 2.0f);
+    u.shadow = glm::vec4(0.0f, 30.0f, 15.0f, 2.0f);
     const glm::vec4 sphere(0, 1, 0, 1);
     auto level = [&](std::uint32_t state) { return state & SHADOW_LEVEL_MASK; };
     EXPECT_EQ(level(crowd::shadowState(sphere, 0, true, u)), 1u);  // 20 texels: under 30, over 15
@@ -47,10 +50,38 @@ TEST(ShadowState, LevelFollowsTexelSizeNeverFinerThanTheViewAndTinyCastersAreDro
     u.shadowFlags.x = 0;  // shadow LOD off: the view's level, and every caster drawn
     EXPECT_EQ(level(crowd::shadowState(sphere, 0, true, u)), 0u);
     EXPECT_NE(crowd::shadowState(glm::vec4(0, 1, 0, 0.09f), 0, true, u) & SHADOW_CASTS_BIT, 0u);
+    EXPECT_EQ(crowd::shadowState(sphere, 0, true, u) >> SHADOW_CASCADE_SHIFT, 1u);  // cast in cascade 0
     // Outside the shadow map's volume: no shadow, in view or not.
-    u.lightPlanes[0] = glm::vec4(1, 0, 0, -5);  // keeps x >= 5
+    u.cascadePlanes[0] = glm::vec4(1, 0, 0, -5);  // keeps x >= 5
     EXPECT_EQ(crowd::shadowState(sphere, 0, true, u) & SHADOW_CASTS_BIT, 0u);
     EXPECT_NE(crowd::shadowState(sphere, 0, true, u) & SHADOW_IN_VIEW_BIT, 0u);
+}
+
+// Two cascades: a caster is drawn in each whose volume its sphere reaches, at a level from the finest of
+// those (the first: cascades run from near to far), and casts nothing outside them all.
+TEST(ShadowState, CascadesACasterReachesAndTheFinestOfThemSetsItsLevel) {
+    gpu::CullUniforms u{};
+    for (int i = 0; i < 6; ++i) u.planes[i] = u.cascadePlanes[i] = u.cascadePlanes[6 + i] = glm::vec4(0, 0, 0, 1e6f);
+    u.cascadePlanes[0] = glm::vec4(-1, 0, 0, 0);  // cascade 0 keeps x <= 0
+    u.cascadePlanes[6] = glm::vec4(1, 0, 0, 0);   // cascade 1 keeps x >= 0
+    u.shadowFlags = glm::uvec4(1, 0, 2, 0);       // shadow LOD on, two cascades
+    u.cascadeTexels = glm::vec4(40.0f, 10.0f, 0.0f, 0.0f);
+    u.flags = glm::uvec4(1, 1, 1, 3);
+    u.limits.y = 1;
+    u.light = glm::vec4(0, 1, 0, 0);
+    u.shadow = glm::vec4(0.0f, 30.0f, 15.0f, 2.0f);
+    auto cascades = [&](const glm::vec4& sphere) { return crowd::shadowState(sphere, 0, true, u) >> SHADOW_CASCADE_SHIFT; };
+    auto level = [&](const glm::vec4& sphere) { return crowd::shadowState(sphere, 0, true, u) & SHADOW_LEVEL_MASK; };
+    EXPECT_EQ(cascades(glm::vec4(-3, 1, 0, 1)), 1u);  // cascade 0 only: 80 texels, LOD 0
+    EXPECT_EQ(level(glm::vec4(-3, 1, 0, 1)), 0u);
+    EXPECT_EQ(cascades(glm::vec4(3, 1, 0, 1)), 2u);   // cascade 1 only: 20 texels, LOD 1
+    EXPECT_EQ(level(glm::vec4(3, 1, 0, 1)), 1u);
+    EXPECT_EQ(cascades(glm::vec4(0.5f, 1, 0, 1)), 3u);  // across the split: both, at cascade 0's level
+    EXPECT_EQ(level(glm::vec4(0.5f, 1, 0, 1)), 0u);
+    u.cascadePlanes[6] = glm::vec4(1, 0, 0, -10);  // cascade 1 now keeps x >= 10: a gap between them
+    EXPECT_EQ(crowd::shadowState(glm::vec4(5, 1, 0, 1), 0, true, u) & SHADOW_CASTS_BIT, 0u);
+    u.flags.y = 0;  // culling off: every caster in every cascade
+    EXPECT_EQ(cascades(glm::vec4(5, 1, 0, 1)), 3u);
 }
 
 std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
@@ -66,15 +97,19 @@ std::vector<std::uint32_t> readLodState(const gpu::VulkanContext& context, const
 float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, const gpu::ModelRecord& m) {
     const glm::vec4 sphere = crowd::worldSphere(c, m);
     float margin = 1e30f;
-    for (const glm::vec4* planes : {u.planes, u.lightPlanes})
+    std::vector<const glm::vec4*> volumes = {u.planes};
+    for (std::uint32_t k = 0; k < u.shadowFlags.z; ++k) volumes.push_back(u.cascadePlanes + 6 * k);
+    for (const glm::vec4* planes : volumes)
         for (int i = 0; i < 6; ++i)
             margin = std::min(margin, std::abs(glm::dot(glm::vec3(planes[i]), glm::vec3(sphere)) + planes[i].w + sphere.w) /
                                           std::max(sphere.w, 1e-3f));
     const float size = crowd::projectedDiameter(sphere, u.camera);
     for (float t : {u.lod.x, u.lod.y, u.lod.w})
         for (float s : {1.0f, 1.0f - u.lod.z, 1.0f + u.lod.z}) margin = std::min(margin, std::abs(size - t * s) / (t * s));
-    const float texels = 2.0f * sphere.w * u.shadow.x;
-    for (float t : {u.shadow.y, u.shadow.z, u.shadow.w}) margin = std::min(margin, std::abs(texels - t) / t);
+    for (std::uint32_t k = 0; k < u.shadowFlags.z; ++k) {
+        const float texels = 2.0f * sphere.w * u.cascadeTexels[static_cast<int>(k)];
+        for (float t : {u.shadow.y, u.shadow.z, u.shadow.w}) margin = std::min(margin, std::abs(texels - t) / t);
+    }
     return margin;
 }
 
@@ -84,7 +119,17 @@ float decisionMargin(const gpu::CullUniforms& u, const gpu::CharacterRecord& c, 
 // size in the map (so the shadow level is coarser than the view's for the nearest): the GPU's shadow
 // states, mesh casters per shadow level and casting impostors equal the CPU reference's, except for
 // characters within 1e-4 of a decision (float rounding).
-TEST_F(GpuTest, ShadowLevelsAndCastersEqualTheCpuReferenceAlongACameraPath) {
+namespace {
+
+struct PathCounts {
+    std::set<std::uint32_t> shadowLevelsUsed;
+    std::uint32_t coarserThanView = 0, outOfViewCasters = 0, impostorCasters = 0, notCasting = 0;
+    std::set<std::uint32_t> cascadeSets;  // the casters' sets of cascades (state words' bits)
+    std::set<float> texelSizes;
+};
+
+PathCounts compareShadowStatesAlongAPath(const app::HostDevice& device, const gpu::VulkanContext& context,
+                                         std::uint32_t cascades) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     app::SceneOptions scene;
     scene.count = 900;
@@ -101,27 +146,26 @@ TEST_F(GpuTest, ShadowLevelsAndCastersEqualTheCpuReferenceAlongACameraPath) {
     // A small map, so a caster is 11 to 16 texels across in it (the view's thresholds read in texels:
     // LOD 1 or 2 from the texels alone), as in a large scene's 2048-texel map.
     options.shadowMapSize = 240;
-    test::TestRenderer renderer(*device, crowd, options);
+    options.shadowCascades = cascades;
+    test::TestRenderer renderer(device, crowd, options);
     const app::CrowdShape shape = test::shapeOf(crowd);
     const float radius = soldier.poseSphere.w;
-    std::set<std::uint32_t> shadowLevelsUsed;
-    std::uint32_t coarserThanView = 0, outOfViewCasters = 0, impostorCasters = 0, notCasting = 0;
-    std::set<float> texelSizes;
+    PathCounts n;
     for (float seconds : {0.0f, 4.0f, 8.0f, 12.0f, 16.0f, 20.0f}) {
-        const std::vector<std::uint32_t> before = readLodState(*context, renderer);
+        const std::vector<std::uint32_t> before = readLodState(context, renderer);
         renderer.camera = app::cameraOnPath(app::CameraPath::FlyOver, shape, 160.0f / 90.0f, seconds);
         renderer.renderFrame(seconds);
         renderer.finish();
         const gpu::CullUniforms uniforms = renderer.cullUniforms();
-        texelSizes.insert(2.0f * radius * uniforms.shadow.x);
+        n.texelSizes.insert(2.0f * radius * uniforms.cascadeTexels.x);
         std::vector<std::uint32_t> cpuState = before;
         std::vector<std::uint32_t> cpuImpostors;
         crowd::ShadowLists expected;
         const crowd::VisibleLists expectedVisible = crowd::cullOnCpu(uniforms, renderer.buffers().records(),
                                                                      renderer.pool().models(), cpuState, &cpuImpostors,
                                                                      nullptr, &expected);
-        const crowd::ShadowLists gpu = test::readShadowLists(*context, renderer);
-        const crowd::VisibleLists gpuVisible = test::readVisibleLists(*context, renderer);
+        const crowd::ShadowLists gpu = test::readShadowLists(context, renderer);
+        const crowd::VisibleLists gpuVisible = test::readVisibleLists(context, renderer);
         const gpu::ModelRecord& model = renderer.pool().models()[0];
         auto expectNearDecision = [&](std::uint32_t c, const char* what) {
             EXPECT_LT(decisionMargin(uniforms, renderer.buffers().records()[c], model), 1e-4f)
@@ -130,7 +174,7 @@ TEST_F(GpuTest, ShadowLevelsAndCastersEqualTheCpuReferenceAlongACameraPath) {
         for (std::size_t b = 0; b < expected.casters.size(); ++b) {
             for (std::uint32_t c : test::differ(expected.casters[b], gpu.casters[b])) expectNearDecision(c, "its shadow level");
             for (std::uint32_t c : test::differ(expectedVisible[b], gpuVisible[b])) expectNearDecision(c, "its skinned level");
-            if (!gpu.casters[b].empty()) shadowLevelsUsed.insert(static_cast<std::uint32_t>(b % LOD_COUNT));
+            if (!gpu.casters[b].empty()) n.shadowLevelsUsed.insert(static_cast<std::uint32_t>(b % LOD_COUNT));
         }
         for (std::uint32_t c : test::differ(expected.impostors, gpu.impostors)) expectNearDecision(c, "its impostor shadow");
         for (std::uint32_t c = 0; c < crowd.size(); ++c) {
@@ -138,24 +182,53 @@ TEST_F(GpuTest, ShadowLevelsAndCastersEqualTheCpuReferenceAlongACameraPath) {
             const std::uint32_t state = gpu.states[c];
             const std::uint32_t viewLevel = std::max(cpuState[c], 1u) - 1u;
             if (!(state & SHADOW_CASTS_BIT)) {
-                ++notCasting;
+                ++n.notCasting;
                 continue;
             }
-            if (!(state & SHADOW_IN_VIEW_BIT)) ++outOfViewCasters;
-            if ((state & SHADOW_LEVEL_MASK) > viewLevel) ++coarserThanView;
+            n.cascadeSets.insert((state >> SHADOW_CASCADE_SHIFT) & 15u);
+            if (!(state & SHADOW_IN_VIEW_BIT)) ++n.outOfViewCasters;
+            if ((state & SHADOW_LEVEL_MASK) > viewLevel) ++n.coarserThanView;
 
-            if ((state & SHADOW_LEVEL_MASK) == IMPOSTOR_LEVEL) ++impostorCasters;
+            if ((state & SHADOW_LEVEL_MASK) == IMPOSTOR_LEVEL) ++n.impostorCasters;
         }
     }
+    return n;
+}
+
+}  // namespace
+
+TEST_F(GpuTest, ShadowLevelsAndCastersEqualTheCpuReferenceAlongACameraPath) {
+    const PathCounts n = compareShadowStatesAlongAPath(*device, *context, 1);
     // Not a trivial path: the shadow level is coarser than the view's for some, casters out of view are
     // kept, impostors cast, and some characters cast nothing.
     std::printf("casters coarser than in view %u, out of view %u, impostors %u; not casting %u; %.1f to %.1f texels\n",
-                coarserThanView, outOfViewCasters, impostorCasters, notCasting, *texelSizes.begin(), *texelSizes.rbegin());
-    EXPECT_GE(shadowLevelsUsed.size(), 2u);
-    EXPECT_GT(coarserThanView, 0u);
-    EXPECT_GT(outOfViewCasters, 0u);
-    EXPECT_GT(impostorCasters, 0u);
-    EXPECT_GT(notCasting, 0u);
+                n.coarserThanView, n.outOfViewCasters, n.impostorCasters, n.notCasting, *n.texelSizes.begin(),
+                *n.texelSizes.rbegin());
+    EXPECT_GE(n.shadowLevelsUsed.size(), 2u);
+    EXPECT_GT(n.coarserThanView, 0u);
+    EXPECT_GT(n.outOfViewCasters, 0u);
+    EXPECT_GT(n.impostorCasters, 0u);
+    EXPECT_GT(n.notCasting, 0u);
+}
+
+// The same with four cascades: each caster's cascades (the bits the compute shadow raster draws it in)
+// and its level from the finest of them equal the CPU's too; casters fall in several cascades, some in
+// two at once (across a split).
+TEST_F(GpuTest, ShadowCascadesOfEachCasterEqualTheCpuReferenceAlongACameraPath) {
+    const PathCounts n = compareShadowStatesAlongAPath(*device, *context, 4);
+    std::set<std::uint32_t> cascadesUsed;
+    bool straddles = false;
+    for (std::uint32_t set : n.cascadeSets) {
+        for (std::uint32_t k = 0; k < 4; ++k)
+            if (set & (1u << k)) cascadesUsed.insert(k);
+        straddles = straddles || std::popcount(set) > 1;
+    }
+    std::printf("cascade sets of casters: %zu, cascades used %zu\n", n.cascadeSets.size(), cascadesUsed.size());
+    EXPECT_FALSE(n.cascadeSets.count(0u)) << "a caster in no cascade";
+    EXPECT_GE(cascadesUsed.size(), 3u);
+    EXPECT_TRUE(straddles);
+    EXPECT_GT(n.outOfViewCasters, 0u);
+    EXPECT_GT(n.impostorCasters, 0u);
 }
 
 namespace {

@@ -89,18 +89,24 @@ MapComparison compareMaps(const std::vector<float>& a, const std::vector<float>&
 // slopes the two compute from the same vertices differ in their last bits (the bias the hardware
 // applied, over the slope computed here: 1.500 +- 0.003 from the 5th to the 95th percentile); where
 // two triangles meet at almost the same depth that can pick the other one. The pictures, shaded from
-// the two maps, agree within 2/255 on 99.8 % of pixels (measured: 99.99 %).
+// the two maps, agree within 2/255 on 99.8 % of pixels (measured: 99.99 %). With four cascades (each a
+// quarter of the map) the far ones cover more ground a texel, so their slopes a texel, the bias and its
+// last-bit differences are larger: depths differ by over 1e-4 on 0.42 % of covered texels (up to 2.6 %
+// in the farthest cascades' squares, 0.03 % in the nearest), the bound 1 %; coverage stays
+// identical and the pictures within 2/255 on 99.99 % of pixels.
 TEST_F(GpuTest, ComputeShadowMapEqualsTheHardwareOne) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     app::SceneOptions scene;
     scene.count = 100;
     crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
+    for (const std::uint32_t cascades : {1u, 4u}) {
     for (const skin::Method method : {skin::Method::Compute, skin::Method::TwoPass}) {
-        SCOPED_TRACE(skin::methodName(method));
+        SCOPED_TRACE(std::string(skin::methodName(method)) + ", cascades " + std::to_string(cascades));
         test::RendererOptions options;
         options.size = {320, 180};
         options.method = method;
         options.shadowMapSize = 384;
+        options.shadowCascades = cascades;
         test::TestRenderer renderer(*device, crowd, options);
         const app::CrowdShape shape = test::shapeOf(crowd);
         renderer.camera.target = shape.center + glm::vec3(0.0f, 1.0f, 0.0f);
@@ -116,10 +122,11 @@ TEST_F(GpuTest, ComputeShadowMapEqualsTheHardwareOne) {
                     maps.depthDiffers, 100.0 * maps.depthDiffers / covered, maps.largestDepthDifference);
         EXPECT_GT(maps.covered, 5000u) << "the casters cover the map";
         EXPECT_LT(maps.coverageDiffers, 0.005 * covered);
-        EXPECT_LT(maps.depthDiffers, 0.005 * covered);
+        EXPECT_LT(maps.depthDiffers, (cascades == 1 ? 0.005 : 0.01) * covered);
         const double matching = test::fractionOfMatchingPixels(hardware.picture, compute.picture, 2);
         std::printf("%s: pictures match within 2/255 on %.3f %% of pixels\n", skin::methodName(method), 100.0 * matching);
         EXPECT_GT(matching, 0.998);
+    }
     }
 }
 

@@ -171,6 +171,7 @@ typedef struct crowdgpu_renderer_settings {
     bool lod_fade;             /* level changes fade over a dithered band (else switch at once) */
     bool events;               /* animation events of the characters in view, in the frame's output */
     uint32_t event_capacity;
+    uint32_t shadow_cascades;  /* 1 to 4: the shadow map's cascades, split by distance */
 } crowdgpu_renderer_settings;
 
 /* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows (casters

@@ -74,6 +74,15 @@ render::CullSettings cullSettings(const RendererSettings& s) {
 
 static_assert(RendererSettings{}.meshRasterLimit == render::kMeshRasterAutomatic,
               "the public default is the recorder's");
+static_assert(RendererSettings{}.shadowCascades == render::kDefaultShadowCascades, "the public default is the recorder's");
+
+void checkShadowCascades(std::uint32_t count, std::uint32_t mapSize) {
+    if (count < 1 || count > render::kMostShadowCascades)
+        throw Error(ErrorCode::InvalidArgument, "shadow cascades must be 1 to 4 (asked for " + std::to_string(count) + ")");
+    if (count > 1 && mapSize < render::kLeastCascadedMapSize)
+        throw Error(ErrorCode::InvalidArgument, "2 to 4 shadow cascades need a shadow map of at least 64 texels (it has " +
+                                                    std::to_string(mapSize) + ")");
+}
 
 frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     if (!(s.lodThresholds[0] > s.lodThresholds[1] && s.lodThresholds[1] > 0.0f))
@@ -84,6 +93,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
         throw Error(ErrorCode::InvalidArgument, "LOD hysteresis must lie in [0, 1)");
     if (s.shadowMapSize == 0 || s.shadowMapSize > 16384)
         throw Error(ErrorCode::InvalidArgument, "shadow map size must be 1 to 16384 texels");
+    checkShadowCascades(s.shadowCascades, s.shadowMapSize);
     if (!(s.meshRasterLimit == render::kMeshRasterAutomatic || (s.meshRasterLimit >= 0.0f && s.meshRasterLimit <= 1e6f)))
         throw Error(ErrorCode::InvalidArgument, "the mesh raster limit must lie in [0, 1e6] pixels, or be -1 (automatic)");
     if (s.events && !(s.eventCapacity >= 1 && s.eventCapacity <= 4000000))
@@ -97,6 +107,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.impostorBlend = s.impostorBlend;
     o.shadowMapSize = s.shadowMapSize;
     o.shadowRaster = internalShadowRaster(s.shadowRaster);
+    o.shadowCascades = s.shadowCascades;
     o.framesInFlight = s.framesInFlight;
     o.meshCapacity = s.impostors ? s.meshCapacity : 0u;
     o.raster = internalRaster(s.raster);
@@ -307,6 +318,14 @@ void Renderer::setShadowLod(bool on) {
 void Renderer::setShadowRaster(ShadowRaster raster) {
     detail::translated([&] { data_->frame->setShadowRaster(detail::internalShadowRaster(raster)); });
     data_->settings.shadowRaster = raster;
+}
+
+void Renderer::setShadowCascades(std::uint32_t count) {
+    detail::translated([&] {
+        detail::checkShadowCascades(count, data_->settings.shadowMapSize);
+        data_->frame->setShadowCascades(count);
+    });
+    data_->settings.shadowCascades = count;
 }
 
 void Renderer::setLodFade(bool on) {

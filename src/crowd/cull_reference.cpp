@@ -1,6 +1,7 @@
 #include "crowd/cull_reference.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "crowd/farthest_first.h"
@@ -64,18 +65,28 @@ std::uint32_t fadeShare(float size, std::uint32_t finer, const glm::vec4& lod) {
     return static_cast<std::uint32_t>(std::floor(share * static_cast<float>(FADE_STEPS) + 0.5f));
 }
 
+std::uint32_t cascadesReached(const glm::vec4& sphere, const gpu::CullUniforms& cull) {
+    std::uint32_t reached = 0u;
+    for (std::uint32_t k = 0; k < cull.shadowFlags.z; ++k)
+        if (sphereInFrustum(cull.cascadePlanes + 6 * k, sphere)) reached |= 1u << k;
+    return reached;
+}
+
 std::uint32_t shadowState(const glm::vec4& sphere, std::uint32_t viewLod, bool inView, const gpu::CullUniforms& cull) {
     std::uint32_t state = inView ? SHADOW_IN_VIEW_BIT : 0u;
     const bool shadowLod = cull.shadowFlags.x != 0u && cull.flags.z != 0u;
-    const float texels = 2.0f * sphere.w * cull.shadow.x;
+    std::uint32_t cascades = cull.limits.y != 0u ? cascadesReached(sphere, cull) : 0u;
+    const int finest = cascades != 0u ? std::countr_zero(cascades) : 0;
+    const float texels = 2.0f * sphere.w * cull.cascadeTexels[finest];
     std::uint32_t level = viewLod;
     if (shadowLod && viewLod != IMPOSTOR_LEVEL)
         level = std::max(viewLod, (texels < cull.shadow.y ? 1u : 0u) + (texels < cull.shadow.z ? 1u : 0u));
     state |= level;
     if (cull.limits.y == 0u) return state;
-    const bool reaches = cull.flags.y == 0u || (casterInFrustum(cull.planes, sphere, glm::vec3(cull.light)) &&
-                                                sphereInFrustum(cull.lightPlanes, sphere));
-    if (reaches && !(shadowLod && texels < cull.shadow.w)) state |= SHADOW_CASTS_BIT;
+    if (cull.flags.y == 0u) cascades = (1u << cull.shadowFlags.z) - 1u;
+    const bool reaches =
+        cull.flags.y == 0u || (casterInFrustum(cull.planes, sphere, glm::vec3(cull.light)) && cascades != 0u);
+    if (reaches && !(shadowLod && texels < cull.shadow.w)) state |= SHADOW_CASTS_BIT | (cascades << SHADOW_CASCADE_SHIFT);
     return state;
 }
 

@@ -27,7 +27,10 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
 // between), and the coarser one's share in steps of 1/FADE_STEPS (0: not fading), as shaders/cull.glsl.inc.
 std::uint32_t fadedLod(float size, const glm::vec4& lod);
 std::uint32_t fadeShare(float size, std::uint32_t finer, const glm::vec4& lod);
-// A character's shadow this frame (gpu_types.h, SHADOW_*): in view, casting, its level in the shadow map.
+// The shadow cascades whose volumes a sphere reaches, a bit each (gpu_types.h, SHADOW_CASCADE_SHIFT).
+std::uint32_t cascadesReached(const glm::vec4& sphere, const gpu::CullUniforms& cull);
+// A character's shadow this frame (gpu_types.h, SHADOW_*): in view, casting, its level in the shadow map,
+// the cascades it is drawn in.
 std::uint32_t shadowState(const glm::vec4& sphere, std::uint32_t viewLod, bool inView, const gpu::CullUniforms& cull);
 
 // Visible characters per bucket (model x LOD_COUNT + lod), in character order.

@@ -84,6 +84,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       views_(options.framesInFlight) {
     if (cull_.impostors) enableImpostors();
     setShadowRaster(options.shadowRaster);
+    setShadowCascades(options.shadowCascades);
     // Meshes in compute: every one it can take under compute, the small ones under auto (none while
     // auto's limit is 0).
     const bool automatic = options.meshRasterLimitPixels < 0.0f;
@@ -104,6 +105,18 @@ void CrowdRecorder::setShadowRaster(render::ShadowRasterPath path) {
     if (path == render::ShadowRasterPath::Compute && !shadowRaster_)
         shadowRaster_ = std::make_unique<render::ShadowRaster>(context_, pool_, lists_, shadowMap_);
     shadowRasterPath_ = path;
+}
+
+void CrowdRecorder::setShadowCascades(std::uint32_t count) {
+    if (count < 1 || count > render::kMostShadowCascades)
+        throw gpu::Error("shadow cascades: " + std::to_string(count) + " is not 1 to " +
+                         std::to_string(render::kMostShadowCascades));
+    shadowCascades_ = count;
+}
+
+render::ShadowCascades CrowdRecorder::shadowCascadesOf(const render::FrameView& view) const {
+    return render::shadowCascades(render::cameraOf(view), render::aspectOf(view), shape_, render::lightDirection(),
+                                  shadowCascades_, shadowMap_.size());
 }
 
 bool CrowdRecorder::rastersShadowsInCompute() const {
@@ -229,14 +242,10 @@ gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) con
         lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
     // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too,
     // those outside the shadow map's volume are not, and each caster's level comes from its size there.
-    render::setShadowUniforms(uniforms, cull_, shadows_, lightOf(view), shadowMap_.size(), render::lightDirection());
+    render::setShadowUniforms(uniforms, cull_, shadows_, shadowCascadesOf(view), shadowMap_.size(), render::lightDirection());
     uniforms.limits.z = lists_.meshCapacity();
     if (!fadesDrawn()) uniforms.fade.x = 0u;
     return uniforms;
-}
-
-glm::mat4 CrowdRecorder::lightOf(const render::FrameView& view) const {
-    return render::lightViewProjection(render::cameraOf(view), render::aspectOf(view), shape_, render::lightDirection());
 }
 
 bool CrowdRecorder::fadesDrawn() const {
@@ -247,11 +256,12 @@ bool CrowdRecorder::fadesDrawn() const {
 
 void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& view) {
     const render::Camera camera = render::cameraOf(view);
-    const glm::mat4 light = lightOf(view);
-    scene_.updateLight(slot, render::makeSceneUniforms(light, pool_.palette(), pool_.texturedMaterials(), 0.0f));
+    const render::ShadowCascades cascades = shadowCascadesOf(view);
+    for (std::uint32_t c = 0; c < cascades.count; ++c)
+        scene_.updateLight(slot, c, render::makeSceneUniforms(cascades.mapClip(c), pool_.palette(), pool_.texturedMaterials(), 0.0f));
     gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
                                                          pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f),
-                                                         light, shadows_, shadowMap_.size());
+                                                         cascades, shadows_, shadowMap_.size());
     scene.shadow.w = static_cast<float>(groundSunlight_.firstLevel(view.viewport.extent));
     scene_.update(slot, scene);
 }
@@ -262,10 +272,10 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
     const render::Camera camera = render::cameraOf(views_[slot]);
     const bool compute = rastersShadowsInCompute();
-    const glm::mat4 light = lightOf(views_[slot]);
+    const render::ShadowCascades cascades = shadowCascadesOf(views_[slot]);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     if (compute) {
-        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), light);
+        shadowRaster_->rasterize(cmd, method_->skinnedVertices(), cascades);
         shadowMap_.copyFrom(cmd, shadowRaster_->depth());
         if (impostorDraw_)
             shadowMap_.beginRenderingOver(cmd);
@@ -273,14 +283,25 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
             shadowMap_.copyDone(cmd);  // no casters left to draw: no rendering pass at all
     } else {
         shadowMap_.beginRendering(cmd);
-        draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot), push,
-                     render::CharacterDraw::Target::ShadowMap);
+        // Every caster into every cascade's square: the scissor and the cascade's clip space keep what falls there.
+        for (std::uint32_t c = 0; c < cascades.count; ++c) {
+            const VkRect2D square = cascades.texels(c, shadowMap_.size());
+            vkCmdSetScissor(cmd, 0, 1, &square);
+            draw_.record(cmd, method_->drawInput(), method_->skinnedVertices(), scene_.lightSet(slot, c), push,
+                         render::CharacterDraw::Target::ShadowMap);
+        }
     }
     // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
-    if (impostorDraw_) impostorDraw_->recordShadows(cmd, scene_.lightSet(slot), push, impostorBlend_);
+    if (impostorDraw_) {
+        for (std::uint32_t c = 0; c < cascades.count; ++c) {
+            const VkRect2D square = cascades.texels(c, shadowMap_.size());
+            vkCmdSetScissor(cmd, 0, 1, &square);
+            impostorDraw_->recordShadows(cmd, scene_.lightSet(slot, c), push, impostorBlend_);
+        }
+    }
     if (!compute || impostorDraw_) shadowMap_.endRendering(cmd);
     // The ground's sunlight from the finished map, in compute, for the ground's one fetch a pixel.
-    groundSunlight_.record(cmd, light, render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
+    groundSunlight_.record(cmd, cascades, render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
                            groundSunlight_.firstLevel(views_[slot].viewport.extent));
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;

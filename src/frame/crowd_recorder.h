@@ -39,6 +39,7 @@
 #include "render/mesh_raster.h"
 #include "render/raster_mode.h"
 #include "render/scene_pass.h"
+#include "render/shadow_cascades.h"
 #include "render/shadow_map.h"
 #include "render/shadow_raster.h"
 #include "render/target_format.h"
@@ -59,6 +60,8 @@ struct RecorderOptions {
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
     render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
+    // Cascades of the shadow map, split by distance (render/shadow_cascades.h): 1 to 4.
+    std::uint32_t shadowCascades = render::kDefaultShadowCascades;
     std::uint32_t framesInFlight = 2;
     std::uint32_t maxTargetDimension = 0;  // 0: device limit
     // Tests: the ground's tiles point-sampled, as before they were filtered (issue 19), to measure
@@ -164,6 +167,12 @@ public:
     // method's skinned vertices can be read by it).
     bool rastersShadowsInCompute() const;
     const render::ShadowMap& shadowMap() const { return shadowMap_; }
+    // The shadow map's cascades, 1 to render::kMostShadowCascades (render/shadow_cascades.h).
+    void setShadowCascades(std::uint32_t count);
+    std::uint32_t shadowCascades() const { return shadowCascades_; }
+    // The cascades' views and projections for this view (culling, the scene's uniforms and the shadow
+    // pass all take them).
+    render::ShadowCascades shadowCascadesOf(const render::FrameView& view) const;
     // A method or path whose bone blocks belong to others (skin::boneBlocksFor) reallocates the bones.
     void setAnimation(render::AnimationPath path);
     void setImpostorBlend(bool on) { impostorBlend_ = on; }
@@ -216,9 +225,6 @@ private:
     std::optional<render::AnimationPath> animationThisFrame() const;
     void enableImpostors();
     void updateUniforms(std::uint32_t slot, const render::FrameView& view);
-    // The shadow map's view and projection for this view (culling, the scene's uniforms and the compute
-    // shadow raster all take it).
-    glm::mat4 lightOf(const render::FrameView& view) const;
     std::unique_ptr<skin::SkinningMethod> createMethod(skin::Method method) const;
     // The method and path from now on, with the bone blocks they need.
     void switchTo(skin::Method method, render::AnimationPath path);
@@ -259,6 +265,7 @@ private:
     render::AnimationPath animation_;
     bool shadows_;
     render::ShadowRasterPath shadowRasterPath_;
+    std::uint32_t shadowCascades_ = render::kDefaultShadowCascades;
     std::unique_ptr<render::ShadowRaster> shadowRaster_;  // made when the compute path is first asked for
     bool impostorBlend_;
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)

@@ -36,14 +36,17 @@ static_assert(sizeof(ImpostorRasterPush) == 112 && offsetof(ImpostorRasterPush, 
 static_assert(sizeof(ImpostorSplit) == 32 && offsetof(ImpostorSplit, largeDispatch) == 16);
 // Read by vkCmdDrawIndirectCount: a VkDrawIndirectCommand, then the count; the tiles follow at 32.
 static_assert(offsetof(VisibilityTileList, drawCount) == sizeof(VkDrawIndirectCommand) && sizeof(VisibilityTileList) == 32);
-static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + 6 * 16 + 3 * 16 && offsetof(CullUniforms, camera) == 96 &&
+constexpr std::size_t kCascadePlanesBytes = MAX_SHADOW_CASCADES * 6 * 16;
+static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + kCascadePlanesBytes + 4 * 16 && offsetof(CullUniforms, camera) == 96 &&
               offsetof(CullUniforms, limits) == 144 && offsetof(CullUniforms, light) == 160 &&
-              offsetof(CullUniforms, lightPlanes) == 176 && offsetof(CullUniforms, shadow) == 272 &&
-              offsetof(CullUniforms, shadowFlags) == 288 && offsetof(CullUniforms, fade) == 304);
+              offsetof(CullUniforms, cascadePlanes) == 176 && offsetof(CullUniforms, cascadeTexels) == 176 + kCascadePlanesBytes &&
+              offsetof(CullUniforms, shadow) == 192 + kCascadePlanesBytes &&
+              offsetof(CullUniforms, shadowFlags) == 208 + kCascadePlanesBytes && offsetof(CullUniforms, fade) == 224 + kCascadePlanesBytes);
 static_assert(sizeof(SkinPassParams) == 32);
 static_assert(offsetof(SceneUniforms, materialFlags) == 112 && offsetof(SceneUniforms, palette) == 128 &&
-              offsetof(SceneUniforms, lightViewProjection) == 128 + 16 * MAX_MATERIALS &&
-              sizeof(SceneUniforms) == 128 + 16 * MAX_MATERIALS + 80);
+              offsetof(SceneUniforms, shadowLight) == 128 + 16 * MAX_MATERIALS &&
+              offsetof(SceneUniforms, shadowSquares) == 192 + 16 * MAX_MATERIALS + 16 * MAX_SHADOW_CASCADES &&
+              sizeof(SceneUniforms) == 192 + 16 * MAX_MATERIALS + 32 * MAX_SHADOW_CASCADES + 64);
 
 // Animation tables: vec4 members only (std430 arrays of them need no padding), a track is four uints.
 static_assert(sizeof(AnimationModel) == 64 && offsetof(AnimationModel, root) == 16);

@@ -49,21 +49,26 @@ gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4
 }
 
 void setShadowUniforms(gpu::CullUniforms& u, const CullSettings& settings, bool shadows,
-                       const glm::mat4& lightViewProjection, std::uint32_t mapSize, const glm::vec3& towardsLight) {
+                       const ShadowCascades& cascades, std::uint32_t mapSize, const glm::vec3& towardsLight) {
     u.limits.y = shadows ? 1u : 0u;
     u.light = glm::vec4(towardsLight, 0.0f);
-    const std::array<glm::vec4, 6> planes = crowd::frustumPlanes(lightViewProjection);
-    std::copy(planes.begin(), planes.end(), u.lightPlanes);
-    // An orthographic projection: clip x = row 0 . (p, 1), so a world unit spans |row 0's xyz| of clip
-    // space's 2, times half the map's texels; the finer of x and y (a caster is never drawn coarser
-    // than either axis allows).
-    auto rowLength = [&](int i) {
-        return glm::length(glm::vec3(lightViewProjection[0][i], lightViewProjection[1][i], lightViewProjection[2][i]));
-    };
-    const float texelsPerUnit = 0.5f * static_cast<float>(mapSize) * std::max(rowLength(0), rowLength(1));
-    u.shadow = glm::vec4(texelsPerUnit, settings.shadowLodThresholds[0], settings.shadowLodThresholds[1],
-                         settings.shadowMinTexels);
+    for (std::uint32_t c = 0; c < kMostShadowCascades; ++c) {
+        // Unused cascades keep no sphere (a plane everything is behind), so no mask bit is ever set for them.
+        std::array<glm::vec4, 6> planes;
+        planes.fill(glm::vec4(0.0f, 0.0f, 0.0f, -1e30f));
+        if (c < cascades.count) planes = crowd::frustumPlanes(cascades.clip[c]);
+        std::copy(planes.begin(), planes.end(), u.cascadePlanes + 6 * c);
+        // An orthographic projection: clip x = row 0 . (p, 1), so a world unit spans |row 0's xyz| of clip
+        // space's 2, times half the square's texels; the finer of x and y (a caster is never drawn coarser
+        // than either axis allows).
+        const glm::mat4& m = cascades.clip[c];
+        auto rowLength = [&](int i) { return glm::length(glm::vec3(m[0][i], m[1][i], m[2][i])); };
+        const float squareTexels = cascades.square[c].z * static_cast<float>(mapSize);
+        u.cascadeTexels[static_cast<int>(c)] = c < cascades.count ? 0.5f * squareTexels * std::max(rowLength(0), rowLength(1)) : 0.0f;
+    }
+    u.shadow = glm::vec4(0.0f, settings.shadowLodThresholds[0], settings.shadowLodThresholds[1], settings.shadowMinTexels);
     u.shadowFlags.x = settings.shadowLod ? 1u : 0u;
+    u.shadowFlags.z = cascades.count;
 }
 
 namespace {

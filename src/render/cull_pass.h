@@ -21,6 +21,7 @@
 #include "render/crowd_buffers.h"
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
+#include "render/shadow_cascades.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -63,11 +64,11 @@ gpu::CullUniforms makeCullUniforms(const CullSettings& settings, const glm::mat4
                                    float verticalFov, std::uint32_t viewportHeight, std::uint32_t characters,
                                    std::uint32_t buckets, std::uint32_t maxGroups);
 
-// The shadow map's part of the uniforms: whether casters are kept (shadows on), the map's volume (the
-// light's orthographic view-projection) as planes, its texels per world unit (a map of `mapSize`
-// texels a side), the shadow LOD's thresholds and the light's direction.
+// The shadow map's part of the uniforms: whether casters are kept (shadows on), each cascade's volume
+// (its orthographic view-projection) as planes and its texels per world unit (a map of `mapSize` texels
+// a side), the shadow LOD's thresholds and the light's direction.
 void setShadowUniforms(gpu::CullUniforms& uniforms, const CullSettings& settings, bool shadows,
-                       const glm::mat4& lightViewProjection, std::uint32_t mapSize, const glm::vec3& towardsLight);
+                       const ShadowCascades& cascades, std::uint32_t mapSize, const glm::vec3& towardsLight);
 
 class CullPass {
 public:

@@ -9,6 +9,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "render/shadow_cascades.h"
 #include "render/shadow_map.h"
 
 namespace render {
@@ -35,6 +36,8 @@ struct Push {
     std::uint32_t size;
     std::uint32_t levels;
     float step;
+    std::uint32_t side;
+    glm::uvec2 origin;
 };
 
 VkImageView createView(const gpu::VulkanContext& context, VkImage image, std::uint32_t firstLevel,
@@ -152,8 +155,8 @@ std::uint32_t GroundSunlight::firstLevel(VkExtent2D viewport) const {
     return first;
 }
 
-void GroundSunlight::record(VkCommandBuffer cmd, const glm::mat4& lightViewProjection, float depthBias,
-                            float texel, std::uint32_t first) const {
+void GroundSunlight::record(VkCommandBuffer cmd, const ShadowCascades& cascades, float depthBias, float texel,
+                            std::uint32_t first) const {
     const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, levels_, 0, 1};
     constexpr gpu::Access computeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
     // The previous frame's ground must be done sampling before the levels are written again.
@@ -161,13 +164,19 @@ void GroundSunlight::record(VkCommandBuffer cmd, const glm::mat4& lightViewProje
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
     first = std::min(first, static_cast<std::uint32_t>(sets_.size() - 1));
     const std::uint32_t side = std::max(size_ >> first, 1u);
-    const Push push{lightViewProjection, glm::vec4(0.0f, depthBias, texel, 0.0f), side,
-                    std::min(kLevelsADispatch, levels_ - first), static_cast<float>(1u << first)};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[first], 0, nullptr);
-    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-    const std::uint32_t blocks = (side + 15) / 16;
-    vkCmdDispatch(cmd, blocks, blocks, 1);
+    // One dispatch a cascade, over its square (the squares do not overlap: no barrier between them).
+    for (std::uint32_t c = 0; c < cascades.count; ++c) {
+        const VkRect2D square = cascades.texels(c, side);
+        const Push push{cascades.clip[c], glm::vec4(0.0f, depthBias, texel, 0.0f), side,
+                        std::min(kLevelsADispatch, levels_ - first), static_cast<float>(1u << first),
+                        std::max(square.extent.width, 1u),
+                        glm::uvec2(static_cast<std::uint32_t>(square.offset.x), static_cast<std::uint32_t>(square.offset.y))};
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+        const std::uint32_t blocks = (push.side + 15) / 16;
+        vkCmdDispatch(cmd, blocks, blocks, 1);
+    }
     gpu::imageBarrier(cmd, image_, all, computeWrite,
                       {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT},
                       VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);

@@ -15,6 +15,7 @@ namespace gpu { class VulkanContext; }
 namespace render {
 
 class ShadowMap;
+struct ShadowCascades;
 
 class GroundSunlight {
 public:
@@ -31,9 +32,9 @@ public:
     // samples finer than it (SceneUniforms::shadow.w).
     std::uint32_t firstLevel(VkExtent2D viewport) const;
     // After the shadow map is drawn and ready to sample (ShadowMap::endRendering): the first level and the
-    // four below it, left ready for the fragment shaders. `depthBias` and `texel` as SceneUniforms::
-    // shadow's y and z.
-    void record(VkCommandBuffer cmd, const glm::mat4& lightViewProjection, float depthBias, float texel,
+    // four below it, each cascade's square from its own transform, left ready for the fragment shaders.
+    // `depthBias` and `texel` as SceneUniforms::shadow's y and z.
+    void record(VkCommandBuffer cmd, const ShadowCascades& cascades, float depthBias, float texel,
                 std::uint32_t firstLevel) const;
     // Shadows off: all lit, ready to sample (bound to the ground's pipeline, never read).
     void recordAllLit(VkCommandBuffer cmd) const;

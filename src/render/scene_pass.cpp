@@ -17,7 +17,7 @@ namespace render {
 ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
                      const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TargetFormat& target,
                      GroundOptions ground)
-    : context_(context) {
+    : context_(context), framesInFlight_(framesInFlight) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[5] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
@@ -26,8 +26,8 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
     setLayout_ = gpu::createSetLayout(context, bindings);
-    // One set per frame in flight seen from the camera, then one per frame seen from the light.
-    const std::uint32_t sets = 2 * framesInFlight;
+    // One set per frame in flight seen from the camera, then one per frame and shadow cascade seen from the light.
+    const std::uint32_t sets = framesInFlight * (1 + kMostShadowCascades);
     const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets},
                                            {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets * (MAX_TEXTURES + 2)},
                                            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sets}};
@@ -87,10 +87,9 @@ void ScenePass::update(std::uint32_t frameSlot, const gpu::SceneUniforms& unifor
     std::memcpy(uniforms_[frameSlot].mapped, &uniforms, sizeof uniforms);
 }
 
-void ScenePass::updateLight(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms) {
-    std::memcpy(uniforms_[uniforms_.size() / 2 + frameSlot].mapped, &uniforms, sizeof uniforms);
+void ScenePass::updateLight(std::uint32_t frameSlot, std::uint32_t cascade, const gpu::SceneUniforms& uniforms) {
+    std::memcpy(uniforms_[lightIndex(frameSlot, cascade)].mapped, &uniforms, sizeof uniforms);
 }
-
 
 void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundPipeline_);
@@ -102,9 +101,18 @@ void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const
 
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
                                      const glm::uvec4& texturedMaterials, float fogDensity,
-                                     const glm::mat4& lightViewProjection, bool shadows, std::uint32_t shadowMapSize) {
+                                     const ShadowCascades& cascades, bool shadows, std::uint32_t shadowMapSize) {
     gpu::SceneUniforms u{};
-    u.lightViewProjection = lightViewProjection;
+    u.shadowLight = cascades.clip[0];
+    for (std::uint32_t c = 0; c < kMostShadowCascades; ++c) {
+        u.shadowFromFirst[c] = cascades.fromFirst[c];
+        u.shadowSquares[c] = cascades.square[c];
+    }
+    u.shadowCascadeUse = glm::vec4(static_cast<float>(cascades.count), cascades.ownedWithin, 0.0f, 0.0f);
+    u.shadowView = cascades.view;
+    // Where each stretch but the last ends; past the used ones, never (the comparison stays false).
+    for (std::uint32_t c = 0; c < kMostShadowCascades; ++c)
+        u.shadowSplits[static_cast<int>(c)] = c + 1 < cascades.count ? cascades.splits[c + 1] : 1e30f;
     u.shadow = glm::vec4(shadows ? 1.0f : 0.0f, kShadowDepthBias, 1.0f / static_cast<float>(shadowMapSize), 0.0f);
     u.materialFlags = texturedMaterials;
     u.viewProjection = viewProjection;

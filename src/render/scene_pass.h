@@ -10,6 +10,7 @@
 #include "gpu/buffer.h"
 #include "gpu_types.h"
 
+#include "render/shadow_cascades.h"
 #include "render/target_format.h"
 
 namespace gpu { class VulkanContext; }
@@ -50,16 +51,23 @@ public:
 
     VkDescriptorSetLayout setLayout() const { return setLayout_; }
     VkDescriptorSet set(std::uint32_t frameSlot) const { return sets_[frameSlot]; }
-    // The same layout seen from the light: its uniforms' viewProjection is the light's (the shadow pass).
-    VkDescriptorSet lightSet(std::uint32_t frameSlot) const { return sets_[sets_.size() / 2 + frameSlot]; }
+    // The same layout seen from the light, one set for each shadow cascade: its uniforms' viewProjection
+    // is the cascade's (the hardware shadow pass, render/shadow_cascades.h: ShadowCascades::mapClip).
+    VkDescriptorSet lightSet(std::uint32_t frameSlot, std::uint32_t cascade) const {
+        return sets_[lightIndex(frameSlot, cascade)];
+    }
     void update(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms);
-    void updateLight(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms);
+    void updateLight(std::uint32_t frameSlot, std::uint32_t cascade, const gpu::SceneUniforms& uniforms);
     void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
 
 private:
     void writeTextures(VkDescriptorSet set, const GeometryPool& pool) const;
+    std::size_t lightIndex(std::uint32_t frameSlot, std::uint32_t cascade) const {
+        return framesInFlight_ + std::size_t{frameSlot} * kMostShadowCascades + cascade;
+    }
 
     const gpu::VulkanContext& context_;
+    std::uint32_t framesInFlight_ = 0;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     std::vector<gpu::Buffer> uniforms_;
@@ -69,10 +77,10 @@ private:
 };
 
 // Scene uniforms for a camera and the pooled palette: sun from the upper left, pale sky, grass; and the
-// shadow map's transform (shadows off: `shadows` false).
+// shadow cascades' transforms (shadows off: `shadows` false).
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
                                      const glm::uvec4& texturedMaterials, float fogDensity,
-                                     const glm::mat4& lightViewProjection = glm::mat4(1.0f), bool shadows = false,
+                                     const ShadowCascades& cascades = {}, bool shadows = false,
                                      std::uint32_t shadowMapSize = 1);
 
 }  // namespace render

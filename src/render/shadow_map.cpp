@@ -1,10 +1,5 @@
 #include "render/shadow_map.h"
 
-#include <algorithm>
-#include <cmath>
-
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
@@ -13,31 +8,6 @@
 namespace render {
 
 glm::vec3 lightDirection() { return glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f)); }
-
-glm::mat4 lightViewProjection(const Camera& camera, float aspect, const CrowdShape& crowd,
-                              const glm::vec3& towardsLight) {
-    // The camera's frustum from its near plane to the shadow distance, in world space.
-    const float reach = glm::distance(camera.eye, crowd.center) + crowd.radius;
-    const float distance = std::clamp(reach, camera.nearPlane * 2.0f, 60.0f * crowd.characterHeight);
-    glm::mat4 projection = glm::perspective(camera.verticalFov, aspect, camera.nearPlane, distance);
-    projection[1][1] *= -1.0f;
-    const glm::mat4 inverse = glm::inverse(projection * glm::lookAt(camera.eye, camera.target, glm::vec3(0, 1, 0)));
-    const glm::vec3 centre = 0.5f * (camera.eye + camera.target);
-    const glm::mat4 view = glm::lookAt(centre + towardsLight, centre, glm::vec3(0.0f, 1.0f, 0.0f));
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 clip((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f, (corner & 4) ? 1.0f : 0.0f, 1.0f);
-        glm::vec4 world = inverse * clip;
-        world /= world.w;
-        world.y = std::max(world.y, 0.0f);  // nothing to shadow below the ground
-        const glm::vec3 p = glm::vec3(view * world);
-        lo = glm::min(lo, p), hi = glm::max(hi, p);
-    }
-    // Casters stand up to a few character heights above the region, towards the light (+z in view space).
-    hi.z += 4.0f * crowd.characterHeight + crowd.radius * 0.05f;
-    lo.z -= crowd.characterHeight;
-    return glm::ortho(lo.x, hi.x, lo.y, hi.y, -hi.z, -lo.z) * view;
-}
 
 ShadowMap::ShadowMap(const gpu::VulkanContext& context, std::uint32_t size) : context_(context) {
     image_ = gpu::createImage2D(context, {size, size}, kShadowFormat,

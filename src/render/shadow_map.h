@@ -1,16 +1,14 @@
 #pragma once
 // The directional light's shadow map: a depth image the characters are drawn into from the light
 // (consuming the same skinned vertices as the colour pass), sampled with depth comparison by the
-// character and ground shading. One map covers the camera's view out to a shadow distance; beyond it
-// nothing is shadowed (a single cascade, see docs/gpu-driven-frame.md, "Shadows").
+// character and ground shading. It covers the camera's view out to a shadow distance in one to four
+// cascades, each a square of it (render/shadow_cascades.h); beyond that nothing is shadowed.
 #include <cstdint>
 
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
 #include "gpu/image.h"
-#include "render/camera.h"
-#include "render/camera.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -20,11 +18,6 @@ constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
 
 // The light: a unit vector towards the sun (the lighting's), and the ambient term.
 glm::vec3 lightDirection();
-
-// Where the map looks: an orthographic view along the light that holds the camera's view out to the
-// shadow distance (the far edge of the crowd, at most 60 character heights), extended towards the
-// light so that casters above that region are in it.
-glm::mat4 lightViewProjection(const Camera& camera, float aspect, const CrowdShape& crowd, const glm::vec3& towardsLight);
 
 class ShadowMap {
 public:

@@ -10,6 +10,7 @@
 #include "render/character_draw.h"
 #include "render/draw_lists.h"
 #include "render/geometry_pool.h"
+#include "render/shadow_cascades.h"
 #include "render/shadow_map.h"
 #include "shadow_raster.comp.spv.h"
 
@@ -17,11 +18,28 @@ namespace render {
 namespace {
 
 struct RasterPush {
-    glm::mat4 lightViewProjection;
-    std::uint32_t size;
-    std::uint32_t groupsPerRow;
-    std::uint32_t firstDraw;
+    glm::vec4 light[3];
+    glm::vec4 toTexels[kMostShadowCascades];
+    glm::uvec4 sizes;
 };
+static_assert(sizeof(RasterPush) == 128, "the least push-constant space Vulkan guarantees");
+
+// The push constants for the cascades: the first cascade's transform (rows x, y, depth) and each
+// cascade's texels from the first's clip x, y (render/shadow_cascades.h: ShadowCascades::fromFirst and
+// the square: texel = ((clip * k + o) * side + 2 corner + side) * size / 2).
+RasterPush pushFor(const ShadowCascades& cascades, std::uint32_t size, std::uint32_t groupsPerRow, std::uint32_t firstDraw) {
+    RasterPush push{};
+    const glm::mat4& m = cascades.clip[0];
+    for (int row = 0; row < 3; ++row) push.light[row] = glm::vec4(m[0][row], m[1][row], m[2][row], m[3][row]);
+    const float half = 0.5f * static_cast<float>(size);
+    for (std::uint32_t c = 0; c < cascades.count; ++c) {
+        const glm::vec4 f = cascades.fromFirst[c], s = cascades.square[c];
+        push.toTexels[c] = glm::vec4(glm::vec2(f) * s.z * half,
+                                     (glm::vec2(f.z, f.w) * s.z + 2.0f * glm::vec2(s) + s.z) * half);
+    }
+    push.sizes = glm::uvec4(size, groupsPerRow, firstDraw, cascades.count);
+    return push;
+}
 
 constexpr std::uint32_t kMostGroupsPerRow = 65535;  // the least maxComputeWorkGroupCount[0] Vulkan allows
 constexpr std::uint32_t kFarDepthBits = 0x3F800000u;  // 1.0f: the cleared map
@@ -63,7 +81,8 @@ void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
                                            {storage, lists_.totals().buffer},
                                            {storage, pool_.indices().buffer},
                                            {storage, vertices.buffer->buffer, 0, vertices.normalsOffset},
-                                           {storage, depth_.buffer}};
+                                           {storage, depth_.buffer},
+                                           {storage, lists_.shadowStates().buffer}};
     rasterSet_ = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
     if (!rasterPipeline_) {
         // Every later set has the same definition, so the layout made with the first one stays valid.
@@ -75,7 +94,7 @@ void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
     boundVertices_ = vertices.buffer->buffer;
 }
 
-void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection) {
+void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades) {
     bindVertices(vertices);
     // The previous frame's copy into the map read the buffer: done before it is cleared.
     gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
@@ -89,12 +108,13 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
                        {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
     const std::uint32_t groups = lists_.drawCapacity();
     const std::uint32_t perRow = std::min(groups, kMostGroupsPerRow);
-    const RasterPush push{lightViewProjection, size_, perRow, lists_.drawCapacity()};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rasterPipeline_);
     const VkDescriptorSet set = rasterSet_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rasterLayout_, 0, 1, &set, 0, nullptr);
+    // One dispatch, the cascade its z (shadow_raster.comp.glsl says why).
+    const RasterPush push = pushFor(cascades, size_, perRow, lists_.drawCapacity());
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-    vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, 1);
+    vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, cascades.count);
     gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite,
                        {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
 }

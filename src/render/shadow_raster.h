@@ -28,6 +28,7 @@ class GeometryPool;
 enum class ShadowRasterPath { Hardware, Compute };
 
 class ShadowMap;
+struct ShadowCascades;
 struct SkinnedVertices;
 
 class ShadowRaster {
@@ -41,9 +42,10 @@ public:
     // Whether these skinned vertices can be read as one storage binding on this device.
     bool canRead(const SkinnedVertices& vertices) const;
     // Outside any rendering pass, after the frame's skinning and lists: clears the depth buffer and
-    // rasterizes the shadow pass's mesh casters into it. Rebinds the vertices when their buffer
-    // changed (a method switch, made with the device idle).
-    void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const glm::mat4& lightViewProjection);
+    // rasterizes the shadow pass's mesh casters into it, each into the squares of the cascades it
+    // reaches (render/shadow_cascades.h). Rebinds the vertices when their buffer changed (a method
+    // switch, made with the device idle).
+    void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades);
     // The skinned vertices' buffer is going away (a method switch): bind the next one afresh.
     void forgetVertices() { boundVertices_ = VK_NULL_HANDLE; }
     // The rasterized depth, one float per map texel (ShadowMap::copyFrom takes it into the map).

@@ -81,6 +81,7 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.lodFade = options.cull.lodFade;
     settings.impostorBlend = options.impostorBlend;
     settings.shadowMapSize = options.shadowMapSize;
+    settings.shadowCascades = options.shadowCascades;
     settings.raster = options.raster == render::RasterMode::Compute ? crowdgpu::Raster::Compute
                       : options.raster == render::RasterMode::Auto  ? crowdgpu::Raster::Auto
                                                                     : crowdgpu::Raster::Hardware;

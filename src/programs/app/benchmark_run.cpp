@@ -37,10 +37,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     RunSummary summary = summarize(renderer.stats(), options.warmup);
     summary.scene = scene.scene;
     summary.culling = std::string(crowdgpu::cullingName(options.scene.cull.mode)) + ", LOD " +
-                      (options.scene.cull.lod ? "on" : "off") + ", shadows " + (options.scene.shadows ? "on" : "off") +
-                      (options.scene.shadows && options.scene.cull.shadowRaster == crowdgpu::ShadowRaster::Compute
-                           ? " (compute raster)" : "") +
-                      impostorSummary(options.scene);
+                      (options.scene.cull.lod ? "on" : "off") + shadowSummary(options.scene) + impostorSummary(options.scene);
     summary.animation = std::string(crowdgpu::behaviourName(scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.scene.animation) + " animation";
     summary.antiAliasing = antiAliasingName(options.scene.samples);

@@ -155,6 +155,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.shadows = shadows;
     settings.shadowLod = cull.shadowLod;
     settings.shadowRaster = cull.shadowRaster;
+    settings.shadowCascades = cull.shadowCascades;
     settings.lodFade = cull.lodFade;
     settings.impostorBlend = cull.impostorBlend;
     settings.raster = cull.raster;

@@ -43,6 +43,7 @@ usage: crowd-bench [options]
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
   --shadow-raster hardware|compute  the shadow map's mesh casters by the graphics pipeline or in compute
                        (default compute)
+  --shadow-cascades N  the shadow map's cascades, 1 to 4, split by distance (default 1)
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --events on|off      the GPU event buffer of the characters in view (default on; pass "events")

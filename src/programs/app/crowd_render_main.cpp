@@ -122,9 +122,7 @@ int run(const app::RenderOptions& options) {
     summary.frames = options.frames;
     summary.scene = options.scene.scene;
     summary.culling = std::string(crowdgpu::cullingName(options.cull.mode)) + ", LOD " + (options.cull.lod ? "on" : "off") +
-                      ", shadows " + (options.shadows ? "on" : "off") +
-                      (options.shadows && options.cull.shadowRaster == crowdgpu::ShadowRaster::Compute ? " (compute raster)" : "") +
-                      app::impostorSummary(options);
+                      app::shadowSummary(options) + app::impostorSummary(options);
     summary.animation = std::string(crowdgpu::behaviourName(options.scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.animation) + " animation";
     summary.antiAliasing = app::antiAliasingName(options.samples);

@@ -51,6 +51,8 @@ usage: crowd-render [options]
   --shadow-raster hardware|compute
                           the shadow map's mesh casters drawn by the graphics pipeline or rasterized
                           in compute (methods with skinned vertices in a buffer; default compute)
+  --shadow-cascades N     the shadow map's cascades, 1 to 4, split by distance: near shadows get finer
+                          texels, far ones coarser, for a cost; 1: one map over the whole view (default 1)
   --aa off|msaa2|msaa4|msaa8
                           anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
                           and ground, averaged into the picture (default %AA%)
@@ -231,6 +233,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             if (!app::parseShadowRaster(raster, options.cull.shadowRaster))
                 throw app::Error("--shadow-raster: '" + raster + "' is not hardware or compute");
         }
+        else if (flag == "--shadow-cascades") options.cull.shadowCascades = parseCount(flag, next(), 1, 4);
         else if (flag == "--lod-fade") options.cull.lodFade = parseOnOff(flag, next());
         else if (flag == "--impostor-blend") options.cull.impostorBlend = parseOnOff(flag, next());
         else if (flag == "--events") options.cull.events = parseOnOff(flag, next());

@@ -102,6 +102,14 @@ std::string impostorSummary(const RenderOptions& options) {
     return text;
 }
 
+std::string shadowSummary(const RenderOptions& options) {
+    if (!options.shadows) return ", shadows off";
+    const bool compute = options.cull.shadowRaster == crowdgpu::ShadowRaster::Compute;
+    const std::uint32_t cascades = options.cull.shadowCascades;
+    return std::string(", shadows on (") + (compute ? "compute" : "hardware") + " raster, " + std::to_string(cascades) +
+           (cascades == 1 ? " cascade)" : " cascades)");
+}
+
 void printSummary(const RunSummary& s) {
     std::printf("%s: %s x %u, %s, %u frames (%u measured) on %s (%s)\n", s.scene.c_str(), s.model.c_str(),
                 s.characters, s.method.c_str(), s.frames, s.measuredFrames, s.device.c_str(), s.driver.c_str());

@@ -56,6 +56,8 @@ struct RunSummary {
 
 // ", impostors off" or ", impostors below 32 px (mesh capacity 65536)": for the summary's culling line.
 std::string impostorSummary(const RenderOptions& options);
+// ", shadows off" or ", shadows on (compute raster, 4 cascades)": the same line's shadows.
+std::string shadowSummary(const RenderOptions& options);
 
 double median(std::vector<double> values);
 double percentile(std::vector<double> values, double fraction);
