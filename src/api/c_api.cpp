@@ -68,6 +68,7 @@ crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     r.lodFade = s.lod_fade;
     r.events = s.events;
     r.eventCapacity = s.event_capacity;
+    r.farCrowd = s.far_crowd;
     return r;
 }
 
@@ -280,6 +281,7 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
     s->lod_fade = d.lodFade;
     s->events = d.events;
     s->event_capacity = d.eventCapacity;
+    s->far_crowd = d.farCrowd;
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,

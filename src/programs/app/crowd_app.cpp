@@ -157,6 +157,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.shadowRaster = cull.shadowRaster;
     settings.lodFade = cull.lodFade;
     settings.impostorBlend = cull.impostorBlend;
+    settings.farCrowd = cull.farCrowd;
     settings.raster = cull.raster;
     settings.meshRasterLimit = cull.meshRasterLimit;
     settings.events = cull.events;
