@@ -245,9 +245,10 @@ struct ImpostorSplit {
 // the tile scan lists its tiles as it does the opaque buffer's.
 #define FAR_CROWD_CHANNELS 8
 #define FAR_CROWD_ONE 65536.0
-// The coarsest atlas mip's texels across a cell (ImpostorAtlas: mips down to 8x8 cells): a pixel of
-// a far impostor takes sub-samples until each spans at most two of them (far_crowd.glsl.inc).
-#define FAR_CROWD_COARSEST_TEXELS 8.0
+// A far impostor's pixels take sub-samples (n x n, at most FAR_CROWD_MOST_SUBSAMPLES a side) only
+// until FAR_CROWD_SAMPLES_ACROSS of them lie across the impostor, so that one under two pixels across
+// is not missed between pixel centres (far_crowd.glsl.inc).
+#define FAR_CROWD_SAMPLES_ACROSS 2.0
 #define FAR_CROWD_MOST_SUBSAMPLES 4
 
 // ---- Meshes in the compute rasterizer (render/mesh_raster.h, docs/compute-raster.md) ----

@@ -38,7 +38,7 @@ layout(std430, set = 0, binding = 8) readonly buffer CharacterStates { uint char
 // The far layer (its depth words and sums, gpu_types.h: FAR_CROWD_*); bound to the visibility buffer
 // when far-crowd is off (never written then).
 layout(std430, set = 0, binding = 9) buffer FarDepth { uint64_t farDepth[]; };
-layout(std430, set = 0, binding = 10) buffer FarSums { uint farSums[]; };
+layout(std430, set = 0, binding = 10) buffer FarSums { uint64_t farSums[]; };  // 32-bit sums in pairs
 layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
 layout(set = 1, binding = 1) uniform sampler2DArray atlasNormal;
 #include "impostor_prop_set.glsl.inc"
