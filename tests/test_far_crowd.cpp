@@ -253,3 +253,49 @@ TEST_F(GpuTest, TheFarLayerMergesWithMeshesByDepth) {
     EXPECT_GE(covering[2], 10u);
     EXPECT_GE(double(asMesh[0]), 0.9 * double(covering[2]));
 }
+
+// The far layer follows a target that changes size (two frames in flight, 160x90 to 240x135 and
+// 120x68, 300 soldiers framed, 132-292 of them averaged): each slot's layer is made again at the new
+// extent, and the picture equals, in every channel of every pixel, that of a renderer made at the new
+// size. A layer left at the old extent would read and write the wrong rows (or past its end).
+TEST_F(GpuTest, TheFarLayerFollowsATargetThatChangesSize) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    app::SceneOptions scene;
+    scene.count = 300;
+    const std::vector<crowd::Character> characters = test::buildCharacters(soldier, scene);
+    crowd::Crowd resizedCrowd(soldier, characters);
+    test::RendererOptions options = farOptions({160, 90}, true);
+    options.framesInFlight = 2;
+    test::TestRenderer resized(*context, resizedCrowd, options);
+    options.atlas = resized.impostorAtlas();
+    const app::CrowdShape shape = test::shapeOf(resizedCrowd);
+    auto picture = [&](test::TestRenderer& r, VkExtent2D size) {
+        if (r.extent().width != size.width || r.extent().height != size.height) r.resize(size);
+        const float aspect = float(size.width) / float(size.height);
+        for (int i = 0; i < 3; ++i) {
+            r.camera = app::cameraOnPath(app::CameraPath::Framed, shape, aspect, 0.0);
+            r.renderFrame(2.0);  // the same frame each time: the last picture does not depend on the slot
+        }
+        r.finish();
+        r.takeStats();
+        return r.readback();
+    };
+    picture(resized, {160, 90});
+    for (const VkExtent2D size : {VkExtent2D{240, 135}, VkExtent2D{120, 68}}) {
+        const app::Rgba8Image moved = picture(resized, size);
+        crowd::Crowd freshCrowd(soldier, characters);
+        options.size = size;
+        test::TestRenderer fresh(*context, freshCrowd, options);
+        const app::Rgba8Image made = picture(fresh, size);
+        const gpu::ImpostorSplit split = splitOf(*context, resized);
+        const double matching = test::fractionOfMatchingPixels(made, moved, 0);
+        std::printf("%ux%u: %u impostors averaged, %.2f %% of pixels equal to a renderer made at this size\n",
+                    size.width, size.height, split.averagedCount, 100.0 * matching);
+        EXPECT_GT(split.averagedCount, 100u);
+        EXPECT_EQ(matching, 1.0);
+        const render::FarCrowdLayer* far = resized.recorder().impostorRaster()->farLayer();
+        ASSERT_NE(far, nullptr);
+        for (std::uint32_t slot = 0; slot < 2; ++slot)
+            EXPECT_EQ(far->depth(slot).size, std::uint64_t{size.width} * size.height * 8) << "slot " << slot;
+    }
+}

@@ -56,9 +56,9 @@ void FarCrowdLayer::release() {
     }
 }
 
-bool FarCrowdLayer::fit(std::uint32_t index, VkExtent2D extent) {
+void FarCrowdLayer::fit(std::uint32_t index, VkExtent2D extent) {
     Slot& slot = slots_[index];
-    if (slot.depth.buffer && extent.width == slot.extent.width && extent.height == slot.extent.height) return false;
+    if (slot.depth.buffer && extent.width == slot.extent.width && extent.height == slot.extent.height) return;
     slot.resolveSet.reset();
     gpu::destroyBuffer(context_, slot.depth);
     gpu::destroyBuffer(context_, slot.sums);
@@ -69,7 +69,6 @@ bool FarCrowdLayer::fit(std::uint32_t index, VkExtent2D extent) {
                                   "far crowd sums");
     const gpu::BufferBinding bindings[2] = {{kStorage, slot.depth.buffer}, {kStorage, slot.sums.buffer}};
     slot.resolveSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_FRAGMENT_BIT, bindings);
-    return true;
 }
 
 void FarCrowdLayer::recordClear(VkCommandBuffer cmd, std::uint32_t index) const {

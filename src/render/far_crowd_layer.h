@@ -37,8 +37,8 @@ public:
     FarCrowdLayer& operator=(const FarCrowdLayer&) = delete;
 
     // The slot's buffers at `extent` (made again when it changes: the host has waited for the slot's
-    // previous frame). Returns whether they were made (the rasterizer's set must bind the new ones).
-    bool fit(std::uint32_t slot, VkExtent2D extent);
+    // previous frame; the rasterizer's set then binds the new ones).
+    void fit(std::uint32_t slot, VkExtent2D extent);
     // Outside any render pass, before the rasterizer writes: empties the slot's layer (the previous
     // frame's reads of it are waited for by the caller's barrier).
     void recordClear(VkCommandBuffer cmd, std::uint32_t slot) const;

@@ -146,11 +146,9 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                             const glm::vec3& eye, VkExtent2D extent, bool blend, bool averageFar) {
     Slot& slot = slots_[index];
     const bool remake = extent.width != slot.extent.width || extent.height != slot.extent.height;
-    if (averageFar) {
-        if (!farLayer_)
-            farLayer_ = std::make_unique<FarCrowdLayer>(context_, sceneSetLayout_, target_,
-                                                        static_cast<std::uint32_t>(slots_.size()), resolveTilePixels_);
-    }
+    if (averageFar && !farLayer_)
+        farLayer_ = std::make_unique<FarCrowdLayer>(context_, sceneSetLayout_, target_,
+                                                    static_cast<std::uint32_t>(slots_.size()), resolveTilePixels_);
     if (remake)
         makeVisibility(index, extent);
     else if (averageFar && !slot.farBound)
