@@ -236,7 +236,7 @@ struct ImpostorSplit {
 };
 #define IMPOSTOR_RASTER_LARGE_PIXELS 16.0
 
-// ---- The far crowd averaged (render/far_crowd.h, docs/picture-quality.md) ----
+// ---- The far crowd averaged (render/far_crowd_layer.h, docs/picture-quality.md) ----
 // Impostors a few pixels across add their coverage-weighted surface to a far layer instead of cutting
 // their coverage at a half: per pixel FAR_CROWD_CHANNELS fixed-point sums (FAR_CROWD_ONE a unit), in
 // order: the tinted albedo premultiplied by coverage (r, g, b), the coverage, the world-space normal
