@@ -223,6 +223,8 @@ struct ImpostorRasterPush {
     uvec4 limits;         // x: the impostor list's capacity, y: threads in the dispatch (they stride over
                           // it), z: the most workgroups the second dispatch may have, w: 1 to blend four
                           // atlas cells, 0 the nearest (impostor-blend)
+    vec4 far;             // x: the largest impostor (the rectangle's longer side, pixels) whose coverage is
+                          // averaged into the far layer instead of winning whole pixels; 0: none (far-crowd off)
 };
 
 // The impostors the compute rasterizer leaves to the hardware path this frame (too large on screen, or
@@ -234,10 +236,25 @@ struct ImpostorSplit {
     uint hardwareCount;
     uint computeCount;   // impostors rasterized in compute, either dispatch (reports and tests)
     uint largeCount;     // impostors that asked for the second dispatch (beyond its most: drawn by one thread)
-    uint unused;
+    uint averagedCount;  // of computeCount, those averaged into the far layer (FAR_CROWD_*)
     uvec4 largeDispatch; // x: impostors listed for the second dispatch (its workgroups), y = z = 1
 };
 #define IMPOSTOR_RASTER_LARGE_PIXELS 16.0
+
+// ---- The far crowd averaged (render/far_crowd_layer.h, docs/picture-quality.md) ----
+// Impostors a few pixels across add their coverage-weighted surface to a far layer instead of cutting
+// their coverage at a half: per pixel FAR_CROWD_CHANNELS fixed-point sums (FAR_CROWD_ONE a unit), in
+// order: the tinted albedo premultiplied by coverage (r, g, b), the coverage, the world-space normal
+// biased to [0, 1] and premultiplied (x, y, z), and the shadow offset's radius premultiplied (metres).
+// The layer's depth is a visibility word of its own (the nearest contribution, its impostor's id), so
+// the tile scan lists its tiles as it does the opaque buffer's.
+#define FAR_CROWD_CHANNELS 8
+#define FAR_CROWD_ONE 65536.0
+// A far impostor's pixels take sub-samples (n x n, at most FAR_CROWD_MOST_SUBSAMPLES a side) only
+// until FAR_CROWD_SAMPLES_ACROSS of them lie across the impostor, so that one under two pixels across
+// is not missed between pixel centres (far_crowd.glsl.inc).
+#define FAR_CROWD_SAMPLES_ACROSS 2.0
+#define FAR_CROWD_MOST_SUBSAMPLES 4
 
 // ---- Meshes in the compute rasterizer (render/mesh_raster.h, docs/compute-raster.md) ----
 // Small characters' skinned triangles go into a visibility buffer of their own (the same 64-bit words:

@@ -13,6 +13,7 @@
 #include "impostor_cell.glsl.inc"
 #include "impostor_sample.glsl.inc"
 #include "fade_dither.glsl.inc"
+#include "impostor_normal.glsl.inc"
 #include "impostor_shade.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };

@@ -10,12 +10,15 @@
 // the thread draws itself. Drawing a pixel: a pixel centre on the quad is tested against the atlas's
 // blended coverage as the hardware path's fragment shader does (cut under half) and depth | list index
 // is kept with a 64-bit atomic min in the visibility buffer; impostor_resolve.frag.glsl shades the winners.
+// An impostor no larger than raster.far.x (the far crowd) is added to the far layer by its coverage
+// instead (far_crowd.glsl.inc), which far_crowd_resolve.frag.glsl lights and blends.
 #include "gpu_types.h"
 #include "impostor_pose.glsl.inc"
 #include "impostor_cell.glsl.inc"
 #include "impostor_quad.glsl.inc"
 #include "impostor_raster_pixel.glsl.inc"
 #include "impostor_sample.glsl.inc"
+#include "impostor_normal.glsl.inc"
 #include "fade_dither.glsl.inc"
 
 layout(local_size_x = IMPOSTOR_RASTER_WORKGROUP) in;
@@ -32,17 +35,24 @@ layout(std430, set = 0, binding = 6) writeonly buffer HardwareImpostors { uint h
 layout(std430, set = 0, binding = 7) buffer LargeImpostors { uint largeImpostors[]; };
 // Every character's state word (gpu_types.h: its fade share, FADE_SHIFT), written by culling.
 layout(std430, set = 0, binding = 8) readonly buffer CharacterStates { uint characterStates[]; };
+// The far layer (its depth words and sums, gpu_types.h: FAR_CROWD_*); bound to the visibility buffer
+// when far-crowd is off (never written then).
+layout(std430, set = 0, binding = 9) buffer FarDepth { uint64_t farDepth[]; };
+layout(std430, set = 0, binding = 10) buffer FarSums { uint64_t farSums[]; };  // 32-bit sums in pairs
 layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
+layout(set = 1, binding = 1) uniform sampler2DArray atlasNormal;
 #include "impostor_prop_set.glsl.inc"
+#include "far_crowd.glsl.inc"
 
 // Impostors this workgroup rasterized: summed in shared memory and added to the split once per
 // workgroup, since millions of atomics on one word would serialize (a few ms for 10,000,000 on one
 // address); the rare hardware-bound and large impostors take global atomics directly.
-shared uint rasterized;
+shared uint rasterized, averaged;
 
 struct Footprint {
     ImpostorQuad quad;
     ImpostorQuadClip clip;
+    vec2 low, high;     // the screen rectangle, pixels
     ivec2 first, last;  // pixels whose centre lies in the screen rectangle, inside the viewport
     float side;         // the rectangle's longer side, pixels
     bool visible;       // no corner at or behind the eye's plane (the hardware path clips such a quad)
@@ -64,6 +74,8 @@ Footprint footprint(uint index) {
         low = min(low, pixel);
         high = max(high, pixel);
     }
+    f.low = low;
+    f.high = high;
     f.side = max(high.x - low.x, high.y - low.y);
     f.first = max(ivec2(ceil(low - 0.5)), ivec2(0));
     f.last = min(ivec2(floor(high - 0.5)), ivec2(raster.viewport.xy) - 1);
@@ -93,23 +105,33 @@ void drawPixels(uint index, Footprint f, uint start, uint stride) {
     }
 }
 
-// Returns whether the impostor is rasterized in compute (here or in the second dispatch).
-bool take(uint index) {
+// How the impostor was drawn: by the hardware path, in compute (here or in the second dispatch), or
+// averaged into the far layer.
+const uint TAKEN_HARDWARE = 0u, TAKEN_COMPUTE = 1u, TAKEN_AVERAGED = 2u;
+
+uint take(uint index) {
     Footprint f = footprint(index);
     if (!f.visible || f.side > raster.viewport.z) {
         hardwareImpostors[atomicAdd(split.hardwareCount, 1u)] = impostors[index];
-        return false;
+        return TAKEN_HARDWARE;
+    }
+    // A fading impostor keeps its dithered pixels (the mesh draws the others), so it is never averaged.
+    if (f.side <= raster.far.x && fadeShareOf(characterStates[impostors[index]]) == 0.0) {
+        CharacterRecord record = characters[impostors[index]];
+        averagePixels(index, f.quad, f.clip, f.low, f.high, f.side, record.tint.rgb, raster.limits.w != 0u,
+                      raster.viewport.xy);
+        return TAKEN_AVERAGED;
     }
     if (f.side > raster.viewport.w) {
         uint slot = atomicAdd(split.largeCount, 1u);
         if (slot < raster.limits.z) {
             largeImpostors[slot] = index;
             atomicMax(split.largeDispatch.x, slot + 1u);
-            return true;
+            return TAKEN_COMPUTE;
         }
     }
     drawPixels(index, f, 0u, 1u);
-    return true;
+    return TAKEN_COMPUTE;
 }
 
 void main() {
@@ -118,12 +140,18 @@ void main() {
         drawPixels(index, footprint(index), gl_LocalInvocationIndex, IMPOSTOR_RASTER_WORKGROUP);
         return;
     }
-    if (gl_LocalInvocationIndex == 0u) rasterized = 0u;
+    if (gl_LocalInvocationIndex == 0u) rasterized = 0u, averaged = 0u;
     barrier();
     uint count = min(impostorFrame.count, raster.limits.x);
-    uint mine = 0u;
-    for (uint index = gl_GlobalInvocationID.x; index < count; index += raster.limits.y) mine += take(index) ? 1u : 0u;
+    uint mine = 0u, mineAveraged = 0u;
+    for (uint index = gl_GlobalInvocationID.x; index < count; index += raster.limits.y) {
+        uint taken = take(index);
+        mine += taken != TAKEN_HARDWARE ? 1u : 0u;
+        mineAveraged += taken == TAKEN_AVERAGED ? 1u : 0u;
+    }
     if (mine > 0u) atomicAdd(rasterized, mine);
+    if (mineAveraged > 0u) atomicAdd(averaged, mineAveraged);
     barrier();
     if (gl_LocalInvocationIndex == 0u && rasterized > 0u) atomicAdd(split.computeCount, rasterized);
+    if (gl_LocalInvocationIndex == 0u && averaged > 0u) atomicAdd(split.averagedCount, averaged);
 }

@@ -15,6 +15,7 @@
 #include "impostor_quad.glsl.inc"
 #include "impostor_raster_pixel.glsl.inc"
 #include "impostor_sample.glsl.inc"
+#include "impostor_normal.glsl.inc"
 #include "impostor_shade.glsl.inc"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };

@@ -110,6 +110,7 @@ TEST(CrowdRenderCli, BadScenesAndLodSettingsAreRejected) {
     expectOneLineError("--lod maybe", "--lod");
     expectOneLineError("--lod-fade maybe", "--lod-fade");
     expectOneLineError("--impostor-blend maybe", "--impostor-blend");
+    expectOneLineError("--far-crowd on", "--far-crowd");
     expectOneLineError("--cull sometimes", "--cull");
     expectOneLineError("--behaviour dance", "--behaviour");
     expectOneLineError("--animation quantum", "--animation");

@@ -129,9 +129,10 @@ std::size_t differingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b) 
 }  // namespace
 
 // The tiles the scan lists (16 and 32 px a side) are exactly those in which the read-back visibility
-// buffer holds a drawn word, for the impostors' buffer and the meshes': none missing, none extra, none
-// twice, and the indirect draw is six vertices a listed tile. Both buffers cover some tiles, not all.
-// A next frame looking away from the crowd lists none.
+// buffer holds a drawn word, for the impostors' buffer, the meshes' and the far crowd's layer (three
+// of the four impostors are under its 16 px: averaged into it): none missing, none extra, none twice, and
+// the indirect draw is six vertices a listed tile. Each buffer covers some tiles, not all. A next frame
+// looking away from the crowd lists none.
 TEST_F(GpuTest, ResolveTilesAreTheTilesTheRasterizersDrewInto) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     for (std::uint32_t tile : {16u, 32u}) {
@@ -144,16 +145,23 @@ TEST_F(GpuTest, ResolveTilesAreTheTilesTheRasterizersDrewInto) {
         const auto impostorSplit = test::readAll<gpu::ImpostorSplit>(*context, recorder.impostorRaster()->split()).at(0);
         EXPECT_EQ(meshSplit.computeCount, 3u);
         EXPECT_EQ(impostorSplit.computeCount, 4u);
+        EXPECT_EQ(impostorSplit.averagedCount, 3u);
         ASSERT_NE(recorder.impostorRaster()->tiles(), nullptr);
+        const render::FarCrowdLayer* far = recorder.impostorRaster()->farLayer();
+        ASSERT_NE(far, nullptr);
+        ASSERT_NE(far->tiles(), nullptr);
         ASSERT_NE(recorder.meshRaster()->tiles(), nullptr);
         const std::uint32_t all = ((kSize.width + tile - 1) / tile) * ((kSize.height + tile - 1) / tile);
         const std::size_t impostorTiles = expectListedTilesAreCovered(
             *context, *recorder.impostorRaster()->tiles(), recorder.impostorRaster()->visibility(0), "impostors");
         const std::size_t meshTiles = expectListedTilesAreCovered(*context, *recorder.meshRaster()->tiles(),
                                                                   recorder.meshRaster()->visibility(0), "meshes");
-        EXPECT_GE(impostorTiles, 4u);
+        const std::size_t farTiles = expectListedTilesAreCovered(*context, *far->tiles(), far->depth(0), "far crowd");
+        EXPECT_GE(impostorTiles, 1u);
+        EXPECT_GE(farTiles, 1u);
         EXPECT_GE(meshTiles, 3u);
         EXPECT_LT(impostorTiles, all / 2);
+        EXPECT_LT(farTiles, all / 2);
         EXPECT_LT(meshTiles, all / 2);
         // The next frame looks away from everyone: both lists are empty again (each frame starts its own).
         render::Camera away = test::internalCamera(scene.renderer.camera);
@@ -164,6 +172,7 @@ TEST_F(GpuTest, ResolveTilesAreTheTilesTheRasterizersDrewInto) {
                                               recorder.impostorRaster()->visibility(0), "impostors, looking away"),
                   0u);
         EXPECT_EQ(readTiles(*context, *recorder.impostorRaster()->tiles()).header.instanceCount, 0u);
+        EXPECT_EQ(expectListedTilesAreCovered(*context, *far->tiles(), far->depth(0), "far crowd, looking away"), 0u);
         ASSERT_TRUE(recorder.meshesInComputeThisFrame(0));
         EXPECT_EQ(readTiles(*context, *recorder.meshRaster()->tiles()).header.instanceCount, 0u);
     }

@@ -125,6 +125,11 @@ struct RendererSettings {
     // four where the view lies below the lowest band's middle or above the highest's); off: the nearest
     // cell alone, cheaper (one texture fetch where up to eight were) but stepping visibly.
     bool impostorBlend = true;
+    // The far crowd averaged: impostors a few pixels across (16 px or less) drawn by the compute
+    // rasterizer add their coverage to a layer blended over the picture, so a crowd seen from far is a
+    // stable average, not single pixels that flicker as the camera moves (docs/picture-quality.md).
+    // Off: they win whole pixels or none (cut at half coverage), as before. No effect on the hardware path.
+    bool farCrowd = true;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
     Raster raster = Raster::Auto;  // the impostors' rasterizer (hardware: the frame as before it; auto falls back
@@ -288,6 +293,7 @@ public:
     void setShadowCascades(std::uint32_t count);  // as RendererSettings::shadowCascades
     void setLodFade(bool on);
     void setImpostorBlend(bool on);
+    void setFarCrowd(bool on);
     void setCulling(Culling culling, bool lod);
     void setImpostors(bool on);
     void setAnimation(Animation animation);

@@ -105,6 +105,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.cull = cullSettings(s);
     o.shadows = s.shadows;
     o.impostorBlend = s.impostorBlend;
+    o.farCrowd = s.farCrowd;
     o.shadowMapSize = s.shadowMapSize;
     o.shadowRaster = internalShadowRaster(s.shadowRaster);
     o.shadowCascades = s.shadowCascades;
@@ -338,6 +339,11 @@ void Renderer::setLodFade(bool on) {
 void Renderer::setImpostorBlend(bool on) {
     data_->frame->setImpostorBlend(on);
     data_->settings.impostorBlend = on;
+}
+
+void Renderer::setFarCrowd(bool on) {
+    data_->frame->setFarCrowd(on);
+    data_->settings.farCrowd = on;
 }
 
 void Renderer::setCulling(Culling culling, bool lod) {

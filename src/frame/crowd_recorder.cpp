@@ -75,11 +75,13 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       rasterLimitPixels_(options.raster == render::RasterMode::Compute ? std::numeric_limits<float>::infinity()
                                                                       : options.rasterLimitPixels),
       resolveTilePixels_(options.resolveTilePixels),
+      farCrowdPixels_(options.farCrowdPixels),
       cull_(options.cull),
       animation_(options.animation),
       shadows_(options.shadows),
       shadowRasterPath_(options.shadowRaster),
       impostorBlend_(options.impostorBlend),
+      farCrowd_(options.farCrowd),
       stages_(options.framesInFlight, Stage::Idle),
       views_(options.framesInFlight) {
     if (cull_.impostors) enableImpostors();
@@ -205,7 +207,8 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
     if (impostorRaster_) {
         // Before the impostor draws: the colour draw's count is what the rasterizer leaves to it.
         const render::Camera camera = render::cameraOf(view);
-        impostorRaster_->record(cmd, slot, view.projection * view.view, camera.eye, view.viewport.extent, impostorBlend_);
+        impostorRaster_->record(cmd, slot, view.projection * view.view, camera.eye, view.viewport.extent, impostorBlend_,
+                                 farCrowd_);
     }
     // Auto's automatic limit: the mesh path when the hardware rasterizer was this slot's wall last time
     // (its frame's counts, read back: the host waited for the slot).
@@ -336,6 +339,8 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     // The compute-rasterized impostors, merged with all of the above by their depth.
     if (impostorRaster_) impostorRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport, impostorBlend_);
     if (meshPathOn_[slot]) meshRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
+    // The far crowd's averaged layer, blended over everything opaque that is behind it.
+    if (impostorRaster_) impostorRaster_->recordFarResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
     stages_[slot] = Stage::Idle;
 }
 
@@ -380,7 +385,8 @@ void CrowdRecorder::enableImpostors() {
     if (raster_ != render::RasterMode::Hardware) {
         impostorRaster_ = std::make_unique<render::ImpostorRaster>(context_, pool_, buffers_, lists_, *atlas_,
                                                                    scene_.setLayout(), target_, framesInFlight_,
-                                                                   rasterLimitPixels_, resolveTilePixels_);
+                                                                   rasterLimitPixels_, resolveTilePixels_,
+                                                                   farCrowdPixels_);
         split = {&impostorRaster_->split(), &impostorRaster_->hardwareList()};
     }
     impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout(),

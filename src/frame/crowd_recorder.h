@@ -57,6 +57,11 @@ struct RecorderOptions {
     bool shadows = true;                 // the directional light's shadow map, drawn from the same skinned vertices
     // Impostors blend the nearest cells (views, elevation bands and frames; docs/impostors.md), or show the nearest.
     bool impostorBlend = true;
+    // Compute-rasterized impostors up to farCrowdPixels across add their coverage to the far layer
+    // instead of winning whole pixels (docs/picture-quality.md, "The far crowd averaged"); off: the
+    // half-coverage cut for every impostor, the picture of before.
+    bool farCrowd = true;
+    float farCrowdPixels = render::kFarCrowdPixels;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
     render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
@@ -177,6 +182,8 @@ public:
     void setAnimation(render::AnimationPath path);
     void setImpostorBlend(bool on) { impostorBlend_ = on; }
     bool impostorBlend() const { return impostorBlend_; }
+    void setFarCrowd(bool on) { farCrowd_ = on; }
+    bool farCrowd() const { return farCrowd_; }
     render::AnimationPath animation() const { return animation_; }
 
     std::uint32_t framesInFlight() const { return framesInFlight_; }
@@ -261,6 +268,7 @@ private:
     render::RasterMode raster_;  // in effect (auto without what it needs: hardware)
     float rasterLimitPixels_;
     std::uint32_t resolveTilePixels_;  // the rasterizers' resolve tiles (0: the whole viewport)
+    float farCrowdPixels_;             // the largest impostor averaged into the far layer (far-crowd on)
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;
@@ -268,6 +276,7 @@ private:
     std::uint32_t shadowCascades_ = render::kDefaultShadowCascades;
     std::unique_ptr<render::ShadowRaster> shadowRaster_;  // made when the compute path is first asked for
     bool impostorBlend_;
+    bool farCrowd_;
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded

@@ -31,8 +31,9 @@ static_assert(sizeof(ImpostorFrame) == 16 && offsetof(ImpostorFrame, demoted) ==
 static_assert(sizeof(MeshCut) == 32 && offsetof(MeshCut, splitDispatch) == 16);
 static_assert(MESH_CUT_COARSE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0 && MESH_CUT_FINE_BUCKETS % MESH_CUT_WORKGROUP_SIZE == 0);
 static_assert(sizeof(ImpostorDrawsHeader) == 16);
-static_assert(sizeof(ImpostorRasterPush) == 112 && offsetof(ImpostorRasterPush, viewport) == 80 &&
-              offsetof(ImpostorRasterPush, limits) == 96);
+// 128 bytes: the push-constant size every device guarantees.
+static_assert(sizeof(ImpostorRasterPush) == 128 && offsetof(ImpostorRasterPush, viewport) == 80 &&
+              offsetof(ImpostorRasterPush, limits) == 96 && offsetof(ImpostorRasterPush, far) == 112);
 static_assert(sizeof(ImpostorSplit) == 32 && offsetof(ImpostorSplit, largeDispatch) == 16);
 // Read by vkCmdDrawIndirectCount: a VkDrawIndirectCommand, then the count; the tiles follow at 32.
 static_assert(offsetof(VisibilityTileList, drawCount) == sizeof(VkDrawIndirectCommand) && sizeof(VisibilityTileList) == 32);

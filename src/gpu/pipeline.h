@@ -39,6 +39,10 @@ struct GraphicsPipelineDesc {
     // cut-out edges as smooth as geometry's, in any draw order, with depth. That alpha is a coverage,
     // not a colour, so it is not written: the target keeps the alpha it was cleared to.
     bool alphaToCoverage = false;
+    // The fragment's colour blended over the target's by its alpha (the target's alpha kept): a layer
+    // covering parts of pixels (the far crowd's).
+    bool blendOver = false;
+    bool depthWrite = true;  // with a depth attachment: the depth test passes write the fragment's depth
 };
 
 // Viewport and scissor are dynamic; rendering uses dynamic rendering with the given formats.

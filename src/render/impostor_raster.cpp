@@ -36,8 +36,9 @@ static_assert(offsetof(ResolvePush, viewport) == 16);
 ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                                const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
                                const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels,
-                               std::uint32_t resolveTilePixels)
-    : context_(context), crowd_(crowd), lists_(lists), atlas_(atlas), limitPixels_(limitPixels), slots_(framesInFlight) {
+                               std::uint32_t resolveTilePixels, float farPixels)
+    : context_(context), crowd_(crowd), lists_(lists), atlas_(atlas), sceneSetLayout_(sceneSetLayout), target_(target),
+      resolveTilePixels_(resolveTilePixels), limitPixels_(limitPixels), farPixels_(farPixels), slots_(framesInFlight) {
     requireComputeRaster(context, target);
     try {
         split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -49,7 +50,7 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
                                        gpu::MemoryUse::DeviceLocal, "large impostors for the compute rasterizer");
         // The slots' set layouts, with any buffer behind them (never bound).
         const gpu::BufferBinding any{kStorage, split_.buffer};
-        const gpu::BufferBinding rasterShape[9] = {any, any, any, any, any, any, any, any, any};
+        const gpu::BufferBinding rasterShape[11] = {any, any, any, any, any, any, any, any, any, any, any};
         rasterPrototype_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, rasterShape);
         resolvePrototype_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_FRAGMENT_BIT,
                                                                     std::span(&any, 1));
@@ -83,6 +84,7 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
 ImpostorRaster::~ImpostorRaster() { release(); }
 
 void ImpostorRaster::release() {
+    farLayer_.reset();
     resolve_.reset();
     if (resolveLayout_) vkDestroyPipelineLayout(context_.device, resolveLayout_, nullptr);
     if (rasterPipeline_) vkDestroyPipeline(context_.device, rasterPipeline_, nullptr);
@@ -112,6 +114,18 @@ void ImpostorRaster::makeVisibility(std::uint32_t index, VkExtent2D extent) {
     slot.extent = extent;
     slot.visibility = gpu::createBuffer(context_, std::uint64_t{extent.width} * extent.height * 8, kUsage,
                                         gpu::MemoryUse::DeviceLocal, "visibility buffer");
+    makeSets(index);
+}
+
+void ImpostorRaster::makeSets(std::uint32_t index) {
+    Slot& slot = slots_[index];
+    slot.rasterSet.reset();
+    slot.resolveSet.reset();
+    // The far layer's buffers, or the visibility buffer in their place (never written: far-crowd off).
+    if (farLayer_) farLayer_->fit(index, slot.extent);
+    slot.farBound = farLayer_ != nullptr;
+    const VkBuffer farDepth = farLayer_ ? farLayer_->depth(index).buffer : slot.visibility.buffer;
+    const VkBuffer farSums = farLayer_ ? farLayer_->sums(index).buffer : slot.visibility.buffer;
     const gpu::BufferBinding raster[] = {{kStorage, atlas_.modelTable().buffer},
                                          {kStorage, crowd_.characters().buffer},
                                          {kStorage, lists_.impostorList().buffer},
@@ -120,16 +134,26 @@ void ImpostorRaster::makeVisibility(std::uint32_t index, VkExtent2D extent) {
                                          {kStorage, split_.buffer},
                                          {kStorage, hardwareList_.buffer},
                                          {kStorage, largeList_.buffer},
-                                         {kStorage, lists_.shadowStates().buffer}};  // the fade shares
+                                         {kStorage, lists_.shadowStates().buffer},  // the fade shares
+                                         {kStorage, farDepth},
+                                         {kStorage, farSums}};
     slot.rasterSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, raster);
     const gpu::BufferBinding resolve[] = {{kStorage, slot.visibility.buffer}};
     slot.resolveSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_FRAGMENT_BIT, resolve);
 }
 
 void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm::mat4& viewProjection,
-                            const glm::vec3& eye, VkExtent2D extent, bool blend) {
+                            const glm::vec3& eye, VkExtent2D extent, bool blend, bool averageFar) {
     Slot& slot = slots_[index];
-    if (extent.width != slot.extent.width || extent.height != slot.extent.height) makeVisibility(index, extent);
+    const bool remake = extent.width != slot.extent.width || extent.height != slot.extent.height;
+    if (averageFar && !farLayer_)
+        farLayer_ = std::make_unique<FarCrowdLayer>(context_, sceneSetLayout_, target_,
+                                                    static_cast<std::uint32_t>(slots_.size()), resolveTilePixels_);
+    if (remake)
+        makeVisibility(index, extent);
+    else if (averageFar && !slot.farBound)
+        makeSets(index);  // the layer is new: bind it
+    slot.averaged = averageFar;
     // The previous frame's reads of the split, the hardware list and the visibility buffer come first.
     gpu::memoryBarrier(cmd,
                        {VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
@@ -139,6 +163,7 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                        {VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     vkCmdFillBuffer(cmd, slot.visibility.buffer, 0, VK_WHOLE_SIZE, VISIBILITY_EMPTY_HIGH);
+    if (averageFar) farLayer_->recordClear(cmd, index);
     // The split's counts to 0 and the second dispatch's y and z to 1 (ranges apart: one write each).
     constexpr VkDeviceSize dispatchY = offsetof(gpu::ImpostorSplit, largeDispatch) + 4;
     vkCmdFillBuffer(cmd, split_.buffer, 0, dispatchY, 0u);
@@ -160,6 +185,7 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                               static_cast<float>(IMPOSTOR_RASTER_LARGE_PIXELS));
     push.limits = glm::uvec4(capacity, groups * IMPOSTOR_RASTER_WORKGROUP,
                              std::min(capacity, context_.properties.limits.maxComputeWorkGroupCount[0]), blend ? 1u : 0u);
+    push.far = glm::vec4(averageFar ? farPixels_ : 0.0f, 0.0f, 0.0f, 0.0f);
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, groups, 1, 1);
     // The large impostors: a workgroup each, as many as the first dispatch listed.
@@ -176,6 +202,7 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
     resolve_->recordTiles(cmd, index, slot.visibility, slot.extent);
+    if (averageFar) farLayer_->recordTiles(cmd, index);
 }
 
 void ImpostorRaster::recordResolve(VkCommandBuffer cmd, std::uint32_t index, VkDescriptorSet sceneSet,
@@ -191,8 +218,13 @@ void ImpostorRaster::recordResolve(VkCommandBuffer cmd, std::uint32_t index, VkD
     resolve_->draw(cmd, index);
 }
 
+void ImpostorRaster::recordFarResolve(VkCommandBuffer cmd, std::uint32_t index, VkDescriptorSet sceneSet,
+                                      const glm::vec3& eye, const VkRect2D& viewport) const {
+    if (slots_[index].averaged) farLayer_->recordResolve(cmd, index, sceneSet, eye, viewport);
+}
+
 std::uint64_t ImpostorRaster::bytes() const {
-    std::uint64_t total = split_.size + hardwareList_.size + largeList_.size;
+    std::uint64_t total = split_.size + hardwareList_.size + largeList_.size + (farLayer_ ? farLayer_->bytes() : 0);
     for (const Slot& slot : slots_) total += slot.visibility.size;
     return total + resolve_->bytes();
 }

@@ -9,7 +9,7 @@ namespace render {
 
 VisibilityResolve::VisibilityResolve(const gpu::VulkanContext& context, std::span<const std::uint32_t> fragmentShader,
                                      VkPipelineLayout layout, const TargetFormat& target, std::uint32_t framesInFlight,
-                                     std::uint32_t tilePixels)
+                                     std::uint32_t tilePixels, ResolveWrite write)
     : context_(context) {
     if (tilePixels > 0) tiles_ = std::make_unique<VisibilityTiles>(context, framesInFlight, tilePixels);
     gpu::GraphicsPipelineDesc desc;
@@ -18,6 +18,8 @@ VisibilityResolve::VisibilityResolve(const gpu::VulkanContext& context, std::spa
     desc.depthFormat = target.depth;
     desc.layout = layout;
     desc.cullMode = VK_CULL_MODE_NONE;
+    desc.blendOver = write == ResolveWrite::LayerOver;
+    desc.depthWrite = write == ResolveWrite::Opaque;
     if (tiles_) {
         // An instance per listed tile, its place in the list's tiles as the instance's attribute.
         desc.vertexShader = visibility_tiles_vert_spv;

@@ -23,13 +23,17 @@ namespace render {
 // that both fragment shaders' push constants hold at byte 16 (offset xy, extent zw).
 constexpr VkShaderStageFlags kResolvePushStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
+// How the resolve's fragments meet the target: opaque (colour and depth written, as a drawn
+// character's), or a layer over it (colour blended by the fragment's alpha, depth tested, not written).
+enum class ResolveWrite { Opaque, LayerOver };
+
 class VisibilityResolve {
 public:
     // The resolve pipeline for `fragmentShader` in `layout` (push constants at kResolvePushStages).
     // `tilePixels`: the tiles' side (isResolveTileSide); 0 draws every pixel of the viewport.
     VisibilityResolve(const gpu::VulkanContext& context, std::span<const std::uint32_t> fragmentShader,
                       VkPipelineLayout layout, const TargetFormat& target, std::uint32_t framesInFlight,
-                      std::uint32_t tilePixels);
+                      std::uint32_t tilePixels, ResolveWrite write = ResolveWrite::Opaque);
     ~VisibilityResolve();
     VisibilityResolve(const VisibilityResolve&) = delete;
     VisibilityResolve& operator=(const VisibilityResolve&) = delete;

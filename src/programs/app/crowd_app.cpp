@@ -158,6 +158,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.shadowCascades = cull.shadowCascades;
     settings.lodFade = cull.lodFade;
     settings.impostorBlend = cull.impostorBlend;
+    settings.farCrowd = cull.farCrowd;
     settings.raster = cull.raster;
     settings.meshRasterLimit = cull.meshRasterLimit;
     settings.events = cull.events;
@@ -167,9 +168,11 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
 std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd& crowd,
                                  const crowdgpu::RendererSettings& settings, VkExtent2D size) {
     // The compute rasterizer's visibility buffers follow the target (8 bytes a pixel, one a frame in flight),
-    // which the library's plan does not know.
+    // which the library's plan does not know; with the far crowd averaged, its layer's too (an 8-byte
+    // depth word and eight 4-byte sums a pixel: FAR_CROWD_CHANNELS in shaders/gpu_types.h).
+    const std::uint64_t perPixel = 8u + (settings.farCrowd ? 8u + 8u * 4u : 0u);
     const std::uint64_t visibility = settings.impostors && settings.raster != crowdgpu::Raster::Hardware
-                                         ? std::uint64_t{size.width} * size.height * 8 * settings.framesInFlight
+                                         ? std::uint64_t{size.width} * size.height * perPixel * settings.framesInFlight
                                          : 0u;
     return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + renderTargetBytes(size, settings.target.samples) +
            visibility;

@@ -46,6 +46,8 @@ usage: crowd-bench [options]
   --shadow-cascades N  the shadow map's cascades, 1 to 4, split by distance (default 1)
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
+  --far-crowd average|off  impostors of 16 px or less drawn in compute add their coverage to a blended
+                       layer; off: each wins whole pixels or none (default average)
   --events on|off      the GPU event buffer of the characters in view (default on; pass "events")
   --props on|off       soldiers carry their rifle (and one in eight a flag); off: the soldier without
                        props (default on; docs/props.md)
@@ -334,11 +336,12 @@ int run(const BenchOptions& options, const std::string& command) {
                 context.description.driver.c_str(), CROWD_COMMIT, utcDate().c_str());
     std::printf("%u measured frames after %u warm-up, %ux%u; frame time: wall clock between frame starts\n",
                 options.frames, options.warmup, options.size.width, options.size.height);
-    std::printf("scene %s: culling %s, LOD %s, fades %s, impostor blend %s, shadows %s, anti-aliasing %s, "
-                "camera %s from %.1f s\n",
+    std::printf("scene %s: culling %s, LOD %s, fades %s, impostor blend %s, far crowd %s, shadows %s, "
+                "anti-aliasing %s, camera %s from %.1f s\n",
                 options.scene.scene.scene.c_str(), crowdgpu::cullingName(options.scene.cull.mode),
                 options.scene.cull.lod ? "on" : "off", options.scene.cull.lodFade ? "on" : "off",
-                options.scene.cull.impostorBlend ? "on" : "off", options.scene.shadows ? "on" : "off",
+                options.scene.cull.impostorBlend ? "on" : "off", options.scene.cull.farCrowd ? "average" : "off",
+                options.scene.shadows ? "on" : "off",
                 app::antiAliasingName(options.scene.samples), app::cameraPathName(options.scene.camera),
                 options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);

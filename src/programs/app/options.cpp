@@ -39,6 +39,8 @@ usage: crowd-render [options]
                           flag; docs/props.md); off: none (default on)
   --impostor-blend on|off impostors blend the two nearest views, elevation bands and animation frames;
                           off: the nearest atlas cell, one texture fetch instead of up to eight (default on)
+  --far-crowd average|off impostors of 16 px or less drawn in compute add their coverage to a blended
+                          layer, a stable average; off: each wins whole pixels or none (default average)
   --events on|off         the GPU event buffer: clip events (footsteps) of the characters in view,
                           found by a pass after culling (default on; docs/events.md)
   --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame; beyond N, the
@@ -158,6 +160,13 @@ bool parseOnOff(const std::string& flag, const std::string& text) {
     throw app::Error(flag + ": '" + text + "' is not on or off");
 }
 
+// --far-crowd: the far crowd averaged by coverage, or cut at half coverage as before.
+bool parseFarCrowd(const std::string& flag, const std::string& text) {
+    if (text == "average") return true;
+    if (text == "off") return false;
+    throw app::Error(flag + ": '" + text + "' is not average or off");
+}
+
 void parseThresholds(const std::string& flag, const std::string& text, app::CullOptions& cull) {
     const std::size_t comma = text.find(',');
     if (comma == std::string::npos) throw app::Error(flag + ": '" + text + "' is not of the form A,B (pixels)");
@@ -236,6 +245,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--shadow-cascades") options.cull.shadowCascades = parseCount(flag, next(), 1, 4);
         else if (flag == "--lod-fade") options.cull.lodFade = parseOnOff(flag, next());
         else if (flag == "--impostor-blend") options.cull.impostorBlend = parseOnOff(flag, next());
+        else if (flag == "--far-crowd") options.cull.farCrowd = parseFarCrowd(flag, next());
         else if (flag == "--events") options.cull.events = parseOnOff(flag, next());
         else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
         else if (flag == "--raster") options.cull.raster = parseRaster(flag, next());

@@ -95,6 +95,7 @@ app::CullOptions cullOf(const crowdgpu::RendererSettings& settings) {
     cull.impostorThreshold = settings.impostorThreshold;
     cull.lodFade = settings.lodFade;
     cull.impostorBlend = settings.impostorBlend;
+    cull.farCrowd = settings.farCrowd;
     return cull;
 }
 

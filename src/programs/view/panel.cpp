@@ -147,6 +147,8 @@ void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {
     changed |= ImGui::Checkbox("fades", &cull.lodFade);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("impostor blend", &cull.impostorBlend);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("far crowd averaged", &cull.farCrowd);
     if (changed) requests.cull = cull;
     bool shadows = state.shadows;
     if (ImGui::Checkbox("shadows", &shadows)) requests.shadows = shadows;

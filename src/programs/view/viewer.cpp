@@ -226,6 +226,7 @@ void Viewer::apply(const PanelRequests& requests) {
         scene_.renderer().setLevels(cull.lodThresholds, cull.hysteresis, cull.impostorThreshold);
         scene_.renderer().library().setLodFade(cull.lodFade);
         scene_.renderer().library().setImpostorBlend(cull.impostorBlend);
+        scene_.renderer().library().setFarCrowd(cull.farCrowd);
     }
     if (requests.shadows) scene_.setShadows(*requests.shadows);
     try {
