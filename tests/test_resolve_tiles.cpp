@@ -106,6 +106,7 @@ struct SevenSoldiers {
         o.framesInFlight = 1;
         o.raster = render::RasterMode::Compute;
         o.resolveTilePixels = tilePixels;
+        o.farCrowd = true;  // the far crowd's layer has tiles of its own to check
         return o;
     }
     // Renders the frame at `time` and returns its picture.

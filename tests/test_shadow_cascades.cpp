@@ -161,14 +161,7 @@ bool darkenedNear(const app::Rgba8Image& shadowed, const app::Rgba8Image& unshad
 
 // Pixels that shadows darkened by more than 8 of 255 in every colour channel.
 std::vector<bool> darkened(const app::Rgba8Image& shadowed, const app::Rgba8Image& unshadowed) {
-    std::vector<bool> mask(shadowed.pixels.size() / 4);
-    for (std::size_t i = 0; i < mask.size(); ++i) {
-        bool darker = true;
-        for (int ch = 0; ch < 3; ++ch)
-            darker = darker && int(unshadowed.pixels[4 * i + ch]) - int(shadowed.pixels[4 * i + ch]) > 8;
-        mask[i] = darker;
-    }
-    return mask;
+    return test::darkenedPixels(shadowed, unshadowed, 8);
 }
 
 // The share of pixels darkened in either picture that are darkened in both, over rows from `firstRow`.

@@ -129,7 +129,7 @@ struct RendererSettings {
     // rasterizer add their coverage to a layer blended over the picture, so a crowd seen from far is a
     // stable average, not single pixels that flicker as the camera moves (docs/picture-quality.md).
     // Off: they win whole pixels or none (cut at half coverage), as before. No effect on the hardware path.
-    bool farCrowd = true;
+    bool farCrowd = false;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
     Raster raster = Raster::Auto;  // the impostors' rasterizer (hardware: the frame as before it; auto falls back

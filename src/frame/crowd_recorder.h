@@ -60,7 +60,7 @@ struct RecorderOptions {
     // Compute-rasterized impostors up to farCrowdPixels across add their coverage to the far layer
     // instead of winning whole pixels (docs/picture-quality.md, "The far crowd averaged"); off: the
     // half-coverage cut for every impostor, the picture of before.
-    bool farCrowd = true;
+    bool farCrowd = false;
     float farCrowdPixels = render::kFarCrowdPixels;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).

@@ -385,6 +385,17 @@ double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image&
     return static_cast<double>(matching) / static_cast<double>(a.pixels.size() / 4);
 }
 
+std::vector<bool> darkenedPixels(const app::Rgba8Image& shadowed, const app::Rgba8Image& unshadowed, int levels) {
+    std::vector<bool> mask(shadowed.pixels.size() / 4);
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        bool darker = true;
+        for (int ch = 0; ch < 3; ++ch)
+            darker = darker && int(unshadowed.pixels[4 * i + ch]) - int(shadowed.pixels[4 * i + ch]) > levels;
+        mask[i] = darker;
+    }
+    return mask;
+}
+
 bool pixelWithin(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance) {
     for (int k = 0; k < 3; ++k)
         if (std::abs(int(a.pixels[pixel * 4 + k]) - int(b.pixels[pixel * 4 + k])) > tolerance) return false;

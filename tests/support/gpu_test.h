@@ -137,6 +137,9 @@ ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, TestRen
 
 // Fraction of pixels whose every channel differs by at most `tolerance` (out of 255).
 double fractionOfMatchingPixels(const app::Rgba8Image& a, const app::Rgba8Image& b, int tolerance);
+// The pixels a shadow darkened: darker in `shadowed` than in `unshadowed` by more than `levels` of 255
+// in every colour channel.
+std::vector<bool> darkenedPixels(const app::Rgba8Image& shadowed, const app::Rgba8Image& unshadowed, int levels);
 // Whether pixel `pixel` (row-major) of the two images differs by at most `tolerance` in R, G and B.
 bool pixelWithin(const app::Rgba8Image& a, const app::Rgba8Image& b, std::size_t pixel, int tolerance);
 // Over the pixels where either picture differs from `background` (the same scene without the character):

@@ -47,7 +47,7 @@ usage: crowd-bench [options]
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --far-crowd average|off  impostors of 16 px or less drawn in compute add their coverage to a blended
-                       layer; off: each wins whole pixels or none (default average)
+                       layer; off: each wins whole pixels or none (default off)
   --events on|off      the GPU event buffer of the characters in view (default on; pass "events")
   --props on|off       soldiers carry their rifle (and one in eight a flag); off: the soldier without
                        props (default on; docs/props.md)
