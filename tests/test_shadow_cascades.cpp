@@ -245,3 +245,38 @@ TEST_F(GpuTest, ShadowCascadesFlagIsCheckedAndDrawsWithValidationSilent) {
     EXPECT_TRUE(compute.err.empty()) << compute.err;
     EXPECT_NE(compute.out.find("shadows on (compute raster, 4 cascades)"), std::string::npos) << compute.out;
 }
+
+// Renderer::setShadowCascades between frames draws what a renderer made with that many cascades draws,
+// and back; a count out of range is refused with the renderer unchanged.
+TEST_F(GpuTest, ShadowCascadesSetBetweenFramesDrawWhatARendererMadeWithThemDraws) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    crowd::Crowd crowd(soldier, fileOfSoldiers(soldier));
+    auto optionsWith = [](std::uint32_t cascades) {
+        test::RendererOptions options;
+        options.size = {160, 90};
+        options.method = skin::Method::Compute;
+        options.shadowMapSize = 512;
+        options.shadowCascades = cascades;
+        return options;
+    };
+    auto frame = [](test::TestRenderer& renderer) {
+        renderer.camera.eye = {-1.5f, 6.0f, 2.0f};
+        renderer.camera.target = {0.5f, 0.0f, -25.0f};
+        renderer.renderFrame(0.5);
+        return renderer.readback();
+    };
+    test::TestRenderer madeWithFour(*device, crowd, optionsWith(4));
+    const app::Rgba8Image four = frame(madeWithFour);
+    test::TestRenderer switched(*device, crowd, optionsWith(1));
+    const app::Rgba8Image one = frame(switched);
+    switched.finish();
+    switched.library().setShadowCascades(4);
+    EXPECT_EQ(switched.library().settings().shadowCascades, 4u);
+    EXPECT_EQ(frame(switched).pixels, four.pixels);
+    switched.finish();
+    EXPECT_THROW(switched.library().setShadowCascades(5), crowdgpu::Error);
+    EXPECT_EQ(switched.library().settings().shadowCascades, 4u);
+    switched.library().setShadowCascades(1);
+    EXPECT_EQ(frame(switched).pixels, one.pixels);
+    EXPECT_NE(one.pixels, four.pixels) << "the cascades change the picture";
+}
