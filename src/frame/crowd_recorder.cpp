@@ -83,7 +83,8 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       impostorBlend_(options.impostorBlend),
       farCrowd_(options.farCrowd),
       stages_(options.framesInFlight, Stage::Idle),
-      views_(options.framesInFlight) {
+      views_(options.framesInFlight),
+      cascades_(options.framesInFlight) {
     if (cull_.impostors) enableImpostors();
     setShadowRaster(options.shadowRaster);
     setShadowCascades(options.shadowCascades);
@@ -174,6 +175,7 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
     if (view.viewport.extent.width == 0 || view.viewport.extent.height == 0)
         throw gpu::Error("recordCompute: the viewport is empty");
     views_[slot] = view;
+    cascades_[slot] = shadowCascadesOf(view);
 
     // The CPU path samples every character's clips here; the GPU path moves them in its passes.
     const std::optional<render::AnimationPath> path = animationThisFrame();
@@ -191,7 +193,7 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         gpu::passDone(passes_, cmd, "motion");
     }
     const bool perCharacterDraws = method_->drawInput() == render::DrawInput::BindPosePerCharacter;
-    cullPass_.record(cmd, slot, cullUniforms(view), cull_.mode, method_->fixedLayout(), perCharacterDraws);
+    cullPass_.record(cmd, slot, cullUniforms(view, cascades_[slot]), cull_.mode, method_->fixedLayout(), perCharacterDraws);
     gpu::passDone(passes_, cmd, "cull");
     if (eventPass_) {
         // Culling said who is in view; the GPU path uploaded the segments already, the others have not.
@@ -239,13 +241,17 @@ std::optional<render::AnimationPath> CrowdRecorder::animationThisFrame() const {
 }
 
 gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) const {
+    return cullUniforms(view, shadowCascadesOf(view));
+}
+
+gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view, const render::ShadowCascades& cascades) const {
     const render::Camera camera = render::cameraOf(view);
     gpu::CullUniforms uniforms = render::makeCullUniforms(
         cull_, view.projection * view.view, camera.eye, camera.verticalFov, view.viewport.extent.height, crowd_.size(),
         lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
     // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too,
     // those outside the shadow map's volume are not, and each caster's level comes from its size there.
-    render::setShadowUniforms(uniforms, cull_, shadows_, shadowCascadesOf(view), shadowMap_.size(), render::lightDirection());
+    render::setShadowUniforms(uniforms, cull_, shadows_, cascades, shadowMap_.size(), render::lightDirection());
     uniforms.limits.z = lists_.meshCapacity();
     if (!fadesDrawn()) uniforms.fade.x = 0u;
     return uniforms;
@@ -259,7 +265,7 @@ bool CrowdRecorder::fadesDrawn() const {
 
 void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& view) {
     const render::Camera camera = render::cameraOf(view);
-    const render::ShadowCascades cascades = shadowCascadesOf(view);
+    const render::ShadowCascades& cascades = cascades_[slot];
     for (std::uint32_t c = 0; c < cascades.count; ++c)
         scene_.updateLight(slot, c, render::makeSceneUniforms(cascades.mapClip(c), pool_.palette(), pool_.texturedMaterials(), 0.0f));
     gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
@@ -275,7 +281,7 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     // The same draws, skinned vertices and methods as the colour pass, seen from the light.
     const render::Camera camera = render::cameraOf(views_[slot]);
     const bool compute = rastersShadowsInCompute();
-    const render::ShadowCascades cascades = shadowCascadesOf(views_[slot]);
+    const render::ShadowCascades& cascades = cascades_[slot];
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     if (compute) {
         shadowRaster_->rasterize(cmd, method_->skinnedVertices(), cascades);

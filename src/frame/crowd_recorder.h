@@ -210,6 +210,7 @@ public:
     const render::CrowdShape& shape() const { return shape_; }
     // What the cull pass gets for this view and the current settings (the CPU reference takes the same).
     gpu::CullUniforms cullUniforms(const render::FrameView& view) const;
+    gpu::CullUniforms cullUniforms(const render::FrameView& view, const render::ShadowCascades& cascades) const;
     // Whether level changes fade this frame: asked for, and the method draws from skinned vertices.
     bool fadesDrawn() const;
     // Device memory of the crowd's buffers and the method's resources.
@@ -281,6 +282,8 @@ private:
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded
     std::vector<render::FrameView> views_;   // per slot: the view recordCompute was given
+    // Per slot: its view's shadow cascades, computed once a frame for culling, uniforms and the shadow pass.
+    std::vector<render::ShadowCascades> cascades_;
 };
 
 }  // namespace frame
