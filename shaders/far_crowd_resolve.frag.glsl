@@ -41,7 +41,7 @@ void main() {
     vec2 ndc = (vec2(pixel) + 0.5) / viewport.zw * 2.0 - 1.0;
     vec4 world = inverse(scene.viewProjection) * vec4(ndc, depth, 1.0);
     vec3 colour = impostorShadeSurface(scene, normal, albedo, world.xyz / world.w, radius, cameraPosition.xyz);
-    // Coverages of several impostors add up (an order-free mean of what they show); past 1 the pixel is full.
-    outColor = vec4(colour, min(coverage, 1.0));
+    // The channel holds optical depths (far_crowd.glsl.inc, farOpticalDepth): the covered share is 1 - exp(-sum).
+    outColor = vec4(colour, 1.0 - exp(-coverage));
     gl_FragDepth = depth;
 }

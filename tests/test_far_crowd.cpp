@@ -5,6 +5,7 @@
 // supersampled render's; with --far-crowd off (RecorderOptions::farCrowd) both fail, which each test
 // checks too. Lavapipe; validation and synchronization validation silent.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -71,8 +72,10 @@ app::Camera pulledBack(const app::CrowdShape& shape, float factor, double pathSe
 // 2,500 still soldiers in the framed view from above, 256x144, one sample a pixel: their impostors are
 // 4-16 px across, 2,493 of them averaged (the split's count; kFarCrowdPixels 16). PSNR against the 4x4
 // supersampled render (1024x576, the same impostors 4x larger drawn opaque, far-crowd off, box-filtered
-// down in linear light) rises by more than 2 dB with averaging. Lavapipe: 32.11 dB averaged, 29.09 dB
-// cut at half coverage (far-crowd off, which the last check fails).
+// down in linear light) rises by more than 4.5 dB with averaging. Lavapipe: 35.20 dB averaged, 29.11 dB
+// cut at half coverage (far-crowd off, which the last check fails). Adding the impostors' coverages
+// where they overlap, rather than their optical depths (far_crowd.glsl.inc), made the crowd too dense
+// and reached only 32.11 dB: the bound fails it too.
 TEST_F(GpuTest, AFarCrowdAveragedComesCloserToItsSupersampledRender) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     app::SceneOptions scene;
@@ -98,7 +101,7 @@ TEST_F(GpuTest, AFarCrowdAveragedComesCloserToItsSupersampledRender) {
     std::printf("far crowd from above: %u impostors, %u averaged; PSNR against the 4x4 supersampled render "
                 "%.2f dB averaged, %.2f dB cut at half coverage (far-crowd off)\n",
                 averagedSplit.computeCount, averagedSplit.averagedCount, psnrAveraged, psnrCut);
-    if (psnrAveraged < psnrCut + 2.0 || std::getenv("CROWD_KEEP_IMAGES")) {
+    if (psnrAveraged < psnrCut + 4.5 || std::getenv("CROWD_KEEP_IMAGES")) {
         app::writePng(test::artifactPath("far-crowd-supersampled.png"), reference);
         app::writePng(test::artifactPath("far-crowd-averaged.png"), averagedPicture);
         app::writePng(test::artifactPath("far-crowd-cut.png"), cutPicture);
@@ -107,7 +110,7 @@ TEST_F(GpuTest, AFarCrowdAveragedComesCloserToItsSupersampledRender) {
     EXPECT_GT(averagedSplit.averagedCount, 0.95 * averagedSplit.computeCount);  // the far crowd, all of it
     EXPECT_EQ(cutSplit.averagedCount, 0u);
     EXPECT_EQ(bigSplit.averagedCount, 0u);
-    EXPECT_GT(psnrAveraged, psnrCut + 2.0);
+    EXPECT_GT(psnrAveraged, psnrCut + 4.5);
 }
 
 // A still crowd (scene time held) of 400 soldiers under a camera orbiting it at the framed distance,
@@ -236,7 +239,8 @@ TEST_F(GpuTest, TheFarLayerMergesWithMeshesByDepth) {
         ASSERT_TRUE(character == 1 || character == 2) << character;
         ++overlap[character];
         asMesh[character] += test::pixelWithin(picture, meshPicture, i, 0) ? 1 : 0;
-        if (double(sums[i * FAR_CROWD_CHANNELS + 3]) / FAR_CROWD_ONE >= 0.25) {
+        // The channel sums optical depths: the covered share is 1 - exp(-sum) (far_crowd_resolve.frag.glsl).
+        if (1.0 - std::exp(-double(sums[i * FAR_CROWD_CHANNELS + 3]) / FAR_CROWD_ONE) >= 0.25) {
             ++covering[character];
             asMesh[0] += test::pixelWithin(picture, meshPicture, i, 0) ? 0 : (character == 2 ? 1 : 0);
         }
