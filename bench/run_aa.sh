@@ -69,9 +69,11 @@ for entry in "${pictures[@]}"; do
   IFS='|' read -r name flags picture_size <<<"$entry"
   for reference in supersampled same-lod; do
     extra=(); [[ $reference == same-lod ]] && extra=("${same_lod[@]}")
+    # The reference cuts every impostor at half coverage (--far-crowd off): the far layer is itself an
+    # average, so a reference made with it would grade the layer against itself.
     # shellcheck disable=SC2086  # flags are words
     run "$name-4x-$reference" "$bin/crowd-render" "${device_flag[@]}" $flags "${extra[@]}" --frames "$picture_frames" \
-      --aa off --size "$(times4 "$picture_size")" --out "$big/$name-4x-$reference.png" &&
+      --aa off --far-crowd off --size "$(times4 "$picture_size")" --out "$big/$name-4x-$reference.png" &&
       run "$name-downsample-$reference" "$bin/image-downsample" "$big/$name-4x-$reference.png" 4 \
         "$res/$name-$reference.png"
   done

@@ -292,7 +292,7 @@ int main(void) {
            "default formats %d, %d", settings.color_format, settings.depth_format);
     EXPECT(settings.raster == CROWDGPU_RASTER_AUTO && settings.mesh_raster_limit == -1.0f && settings.shadow_lod &&
                settings.shadow_raster_compute && settings.impostor_blend && settings.lod_fade && settings.events &&
-               settings.event_capacity == 65536 && settings.shadow_cascades == 1 && !settings.far_crowd,
+               settings.event_capacity == 65536 && settings.shadow_cascades == 1 && settings.far_crowd,
            "default raster %d, mesh raster limit %g, shadow LOD %d, shadow raster compute %d, impostor blend %d, "
            "fades %d, events %d (%u), shadow cascades %u, far crowd %d", settings.raster, settings.mesh_raster_limit,
            settings.shadow_lod, settings.shadow_raster_compute, settings.impostor_blend, settings.lod_fade,

@@ -74,7 +74,9 @@ TEST(ShadowCascades, CoverTheViewToTheShadowDistanceWithNoGap) {
             for (std::uint32_t k = 0; k < count; ++k) {
                 EXPECT_LT(cascades.splits[k], cascades.splits[k + 1]);
                 const float perMetre = cascades.square[k].z * 2048.0f * 0.5f * glm::length(glm::vec3(cascades.clip[k][0][0], cascades.clip[k][1][0], cascades.clip[k][2][0]));
-                if (c.alongTheGround) EXPECT_LT(perMetre, texelsPerMetre) << "cascade " << k << " is no coarser than the one before";
+                if (c.alongTheGround) {
+                    EXPECT_LT(perMetre, texelsPerMetre) << "cascade " << k << " is no coarser than the one before";
+                }
                 texelsPerMetre = perMetre;
             }
             std::size_t points = 0, gaps = 0, coarser = 0;

@@ -127,9 +127,11 @@ struct RendererSettings {
     bool impostorBlend = true;
     // The far crowd averaged: impostors a few pixels across (16 px or less) drawn by the compute
     // rasterizer add their coverage to a layer blended over the picture, so a crowd seen from far is a
-    // stable average, not single pixels that flicker as the camera moves (docs/picture-quality.md).
-    // Off: they win whole pixels or none (cut at half coverage), as before. No effect on the hardware path.
-    bool farCrowd = false;
+    // stable average, not single pixels that flicker as the camera moves, and closer to the meshes they
+    // stand for (docs/picture-quality.md). On by default, set by measurement: on the H100 it is closer
+    // to a supersampled render of the meshes (+8 dB) and 27 % faster at 1,000,000 from above.
+    // Off: they win whole pixels or none (cut at half coverage). No effect on the hardware path.
+    bool farCrowd = true;
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
     Raster raster = Raster::Auto;  // the impostors' rasterizer (hardware: the frame as before it; auto falls back

@@ -59,8 +59,8 @@ struct RecorderOptions {
     bool impostorBlend = true;
     // Compute-rasterized impostors up to farCrowdPixels across add their coverage to the far layer
     // instead of winning whole pixels (docs/picture-quality.md, "The far crowd averaged"); off: the
-    // half-coverage cut for every impostor, the picture of before.
-    bool farCrowd = false;
+    // half-coverage cut for every impostor.
+    bool farCrowd = true;
     float farCrowdPixels = render::kFarCrowdPixels;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).

@@ -40,7 +40,7 @@ usage: crowd-render [options]
   --impostor-blend on|off impostors blend the two nearest views, elevation bands and animation frames;
                           off: the nearest atlas cell, one texture fetch instead of up to eight (default on)
   --far-crowd average|off impostors of 16 px or less drawn in compute add their coverage to a blended
-                          layer, a stable average; off: each wins whole pixels or none (default off)
+                          layer, a stable average; off: each wins whole pixels or none (default average)
   --events on|off         the GPU event buffer: clip events (footsteps) of the characters in view,
                           found by a pass after culling (default on; docs/events.md)
   --mesh-capacity N       with impostors on: at most N characters at LOD 0-2 in a frame; beyond N, the

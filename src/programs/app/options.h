@@ -34,7 +34,7 @@ struct CullOptions {
     std::uint32_t shadowCascades = crowdgpu::RendererSettings{}.shadowCascades;  // the map's cascades, 1 to 4
     bool lodFade = true;        // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
     bool impostorBlend = true;  // impostors blend up to eight atlas cells, or show the nearest (crowdgpu::RendererSettings)
-    bool farCrowd = false;  // --far-crowd average|off (crowdgpu::RendererSettings::farCrowd)
+    bool farCrowd = crowdgpu::RendererSettings{}.farCrowd;  // --far-crowd average|off (crowdgpu::RendererSettings)
     bool events = true;  // the GPU event buffer of the characters in view (crowdgpu::RendererSettings::events)
     // Which rasterizer draws the impostors, decided per impostor by its size under auto (--raster).
     crowdgpu::Raster raster = crowdgpu::Raster::Auto;
