@@ -31,17 +31,17 @@ void main() {
     uint depthBits = uint(farDepth[at] >> 32);
     if (depthBits == VISIBILITY_EMPTY_HIGH) discard;
     uint base = at * uint(FAR_CROWD_CHANNELS);
-    float coverage = farSum(base, 3u);
-    if (coverage <= 0.0) discard;
-    vec3 albedo = vec3(farSum(base, 0u), farSum(base, 1u), farSum(base, 2u)) / coverage;
-    vec3 normal = vec3(farSum(base, 4u), farSum(base, 5u), farSum(base, 6u)) / coverage * 2.0 - 1.0;
-    float radius = farSum(base, 7u) / coverage;
+    float opticalDepth = farSum(base, 3u);  // the weights' sum (far_crowd.glsl.inc, farOpticalDepth)
+    if (opticalDepth <= 0.0) discard;
+    vec3 albedo = vec3(farSum(base, 0u), farSum(base, 1u), farSum(base, 2u)) / opticalDepth;
+    vec3 normal = vec3(farSum(base, 4u), farSum(base, 5u), farSum(base, 6u)) / opticalDepth * 2.0 - 1.0;
+    float radius = farSum(base, 7u) / opticalDepth;
     float depth = uintBitsToFloat(depthBits);
     // The nearest contribution's point: the pixel centre at that depth, back through the view-projection.
     vec2 ndc = (vec2(pixel) + 0.5) / viewport.zw * 2.0 - 1.0;
     vec4 world = inverse(scene.viewProjection) * vec4(ndc, depth, 1.0);
     vec3 colour = impostorShadeSurface(scene, normal, albedo, world.xyz / world.w, radius, cameraPosition.xyz);
-    // The channel holds optical depths (far_crowd.glsl.inc, farOpticalDepth): the covered share is 1 - exp(-sum).
-    outColor = vec4(colour, 1.0 - exp(-coverage));
+    // Independent layers leave exp(-sum) of the pixel uncovered.
+    outColor = vec4(colour, 1.0 - exp(-opticalDepth));
     gl_FragDepth = depth;
 }

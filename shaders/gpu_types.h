@@ -242,10 +242,11 @@ struct ImpostorSplit {
 #define IMPOSTOR_RASTER_LARGE_PIXELS 16.0
 
 // ---- The far crowd averaged (render/far_crowd_layer.h, docs/picture-quality.md) ----
-// Impostors a few pixels across add their coverage-weighted surface to a far layer instead of cutting
-// their coverage at a half: per pixel FAR_CROWD_CHANNELS fixed-point sums (FAR_CROWD_ONE a unit), in
-// order: the tinted albedo premultiplied by coverage (r, g, b), the coverage, the world-space normal
-// biased to [0, 1] and premultiplied (x, y, z), and the shadow offset's radius premultiplied (metres).
+// Impostors a few pixels across add their surface to a far layer instead of cutting their coverage at
+// a half, weighted by the optical depth of their coverage c, -ln(1 - c): per pixel FAR_CROWD_CHANNELS
+// fixed-point sums (FAR_CROWD_ONE a unit), in order: the tinted albedo (r, g, b), the optical depth,
+// the world-space normal biased to [0, 1] (x, y, z) and the shadow offset's radius (metres), each
+// times the optical depth.
 // The layer's depth is a visibility word of its own (the nearest contribution, its impostor's id), so
 // the tile scan lists its tiles as it does the opaque buffer's.
 #define FAR_CROWD_CHANNELS 8
