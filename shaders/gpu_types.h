@@ -224,7 +224,9 @@ struct ImpostorRasterPush {
                           // it), z: the most workgroups the second dispatch may have, w: 1 to blend four
                           // atlas cells, 0 the nearest (impostor-blend)
     vec4 far;             // x: the largest impostor (the rectangle's longer side, pixels) whose coverage is
-                          // averaged into the far layer instead of winning whole pixels; 0: none (far-crowd off)
+                          // averaged into the far layer instead of winning whole pixels; 0: none (far-crowd off);
+                          // y: those under this many pixels are splatted from their quadrants' means (0: none);
+                          // z: the atlas level where a cell is two texels across
 };
 
 // The impostors the compute rasterizer leaves to the hardware path this frame (too large on screen, or
@@ -253,7 +255,8 @@ struct ImpostorSplit {
 #define FAR_CROWD_ONE 65536.0
 // A far impostor's pixels take sub-samples (n x n, at most FAR_CROWD_MOST_SUBSAMPLES a side) only
 // until FAR_CROWD_SAMPLES_ACROSS of them lie across the impostor, so that one under two pixels across
-// is not missed between pixel centres (far_crowd.glsl.inc).
+// is not missed between pixel centres (far_crowd.glsl.inc); one under ImpostorRasterPush::far.y is
+// splatted instead, which needs none.
 #define FAR_CROWD_SAMPLES_ACROSS 2.0
 #define FAR_CROWD_MOST_SUBSAMPLES 4
 

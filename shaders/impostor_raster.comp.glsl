@@ -11,7 +11,8 @@
 // blended coverage as the hardware path's fragment shader does (cut under half) and depth | list index
 // is kept with a 64-bit atomic min in the visibility buffer; impostor_resolve.frag.glsl shades the winners.
 // An impostor no larger than raster.far.x (the far crowd) is added to the far layer by its coverage
-// instead (far_crowd.glsl.inc), which far_crowd_resolve.frag.glsl lights and blends.
+// instead (far_crowd.glsl.inc), which far_crowd_resolve.frag.glsl lights and blends; one under
+// raster.far.y pixels is left to the third dispatch (SPLAT_PASS), which splats it.
 #include "gpu_types.h"
 #include "impostor_pose.glsl.inc"
 #include "impostor_cell.glsl.inc"
@@ -22,7 +23,10 @@
 #include "fade_dither.glsl.inc"
 
 layout(local_size_x = IMPOSTOR_RASTER_WORKGROUP) in;
-layout(constant_id = 0) const bool LARGE_PASS = false;
+// Which dispatch: the list's impostors (MAIN_PASS), the large ones it listed (LARGE_PASS), or the far
+// layer's splats (SPLAT_PASS: the list again, taking only those).
+const uint MAIN_PASS = 0u, LARGE_PASS = 1u, SPLAT_PASS = 2u;
+layout(constant_id = 0) const uint RASTER_PASS = MAIN_PASS;
 
 layout(push_constant) uniform Push { ImpostorRasterPush raster; };
 layout(std430, set = 0, binding = 0) readonly buffer ImpostorModels { ImpostorModel impostorModels[]; };
@@ -105,18 +109,25 @@ void drawPixels(uint index, Footprint f, uint start, uint stride) {
     }
 }
 
-// How the impostor was drawn: by the hardware path, in compute (here or in the second dispatch), or
-// averaged into the far layer.
-const uint TAKEN_HARDWARE = 0u, TAKEN_COMPUTE = 1u, TAKEN_AVERAGED = 2u;
+// How the impostor was drawn: by the hardware path, in compute (here or in the second dispatch),
+// averaged into the far layer, splatted into it (by the third dispatch), or, in the third, by another.
+const uint TAKEN_HARDWARE = 0u, TAKEN_COMPUTE = 1u, TAKEN_AVERAGED = 2u, TAKEN_SPLATTED = 3u, TAKEN_ELSEWHERE = 4u;
+
+bool forHardware(Footprint f) { return !f.visible || f.side > raster.viewport.z; }
+
+// A fading impostor keeps its dithered pixels (the mesh draws the others), so it is never averaged.
+bool joinsFarLayer(uint index, Footprint f) {
+    return f.side <= raster.far.x && fadeShareOf(characterStates[impostors[index]]) == 0.0;
+}
 
 uint take(uint index) {
     Footprint f = footprint(index);
-    if (!f.visible || f.side > raster.viewport.z) {
+    if (forHardware(f)) {
         hardwareImpostors[atomicAdd(split.hardwareCount, 1u)] = impostors[index];
         return TAKEN_HARDWARE;
     }
-    // A fading impostor keeps its dithered pixels (the mesh draws the others), so it is never averaged.
-    if (f.side <= raster.far.x && fadeShareOf(characterStates[impostors[index]]) == 0.0) {
+    if (joinsFarLayer(index, f)) {
+        if (f.side < raster.far.y) return TAKEN_SPLATTED;
         CharacterRecord record = characters[impostors[index]];
         averagePixels(index, f.quad, f.clip, f.low, f.high, f.side, record.tint.rgb, raster.limits.w != 0u,
                       raster.viewport.xy);
@@ -134,8 +145,18 @@ uint take(uint index) {
     return TAKEN_COMPUTE;
 }
 
+// The splats' dispatch: the impostors take() left to it, found again by the same tests.
+uint splat(uint index) {
+    Footprint f = footprint(index);
+    if (forHardware(f) || !joinsFarLayer(index, f) || f.side >= raster.far.y) return TAKEN_ELSEWHERE;
+    CharacterRecord record = characters[impostors[index]];
+    splatPixels(index, f.quad, f.clip, f.low, f.high, record.tint.rgb, raster.limits.w != 0u, raster.viewport.xy,
+                int(raster.far.z));
+    return TAKEN_SPLATTED;
+}
+
 void main() {
-    if (LARGE_PASS) {
+    if (RASTER_PASS == LARGE_PASS) {
         uint index = largeImpostors[gl_WorkGroupID.x];
         drawPixels(index, footprint(index), gl_LocalInvocationIndex, IMPOSTOR_RASTER_WORKGROUP);
         return;
@@ -145,9 +166,11 @@ void main() {
     uint count = min(impostorFrame.count, raster.limits.x);
     uint mine = 0u, mineAveraged = 0u;
     for (uint index = gl_GlobalInvocationID.x; index < count; index += raster.limits.y) {
-        uint taken = take(index);
-        mine += taken != TAKEN_HARDWARE ? 1u : 0u;
-        mineAveraged += taken == TAKEN_AVERAGED ? 1u : 0u;
+        // Each splat is counted by the dispatch that draws it.
+        uint taken = RASTER_PASS == SPLAT_PASS ? splat(index) : take(index);
+        bool drawnHere = RASTER_PASS == SPLAT_PASS ? taken == TAKEN_SPLATTED : taken == TAKEN_COMPUTE || taken == TAKEN_AVERAGED;
+        mine += drawnHere ? 1u : 0u;
+        mineAveraged += drawnHere && taken != TAKEN_COMPUTE ? 1u : 0u;
     }
     if (mine > 0u) atomicAdd(rasterized, mine);
     if (mineAveraged > 0u) atomicAdd(averaged, mineAveraged);

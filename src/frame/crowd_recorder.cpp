@@ -75,7 +75,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       rasterLimitPixels_(options.raster == render::RasterMode::Compute ? std::numeric_limits<float>::infinity()
                                                                       : options.rasterLimitPixels),
       resolveTilePixels_(options.resolveTilePixels),
-      farCrowdPixels_(options.farCrowdPixels),
+      farSizes_{options.farCrowdPixels, options.farCrowdSplatPixels},
       cull_(options.cull),
       animation_(options.animation),
       shadows_(options.shadows),
@@ -392,7 +392,7 @@ void CrowdRecorder::enableImpostors() {
         impostorRaster_ = std::make_unique<render::ImpostorRaster>(context_, pool_, buffers_, lists_, *atlas_,
                                                                    scene_.setLayout(), target_, framesInFlight_,
                                                                    rasterLimitPixels_, resolveTilePixels_,
-                                                                   farCrowdPixels_);
+                                                                   farSizes_);
         split = {&impostorRaster_->split(), &impostorRaster_->hardwareList()};
     }
     impostorDraw_ = std::make_unique<render::ImpostorDraw>(context_, pool_, buffers_, lists_, *atlas_, scene_.setLayout(),

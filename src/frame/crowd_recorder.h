@@ -62,6 +62,8 @@ struct RecorderOptions {
     // half-coverage cut for every impostor.
     bool farCrowd = true;
     float farCrowdPixels = render::kFarCrowdPixels;
+    // Tests: 0 averages the smallest far impostors by sub-samples too, the reference of their splats.
+    float farCrowdSplatPixels = render::kFarCrowdSplatPixels;
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
     render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
@@ -269,7 +271,7 @@ private:
     render::RasterMode raster_;  // in effect (auto without what it needs: hardware)
     float rasterLimitPixels_;
     std::uint32_t resolveTilePixels_;  // the rasterizers' resolve tiles (0: the whole viewport)
-    float farCrowdPixels_;             // the largest impostor averaged into the far layer (far-crowd on)
+    render::FarCrowdSizes farSizes_;   // which impostors the far layer takes (far-crowd on)
     render::CullSettings cull_;
     render::AnimationPath animation_;
     bool shadows_;

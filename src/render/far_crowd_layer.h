@@ -27,6 +27,16 @@ namespace render {
 // The largest impostor (its screen rectangle's longer side, pixels) that is averaged into the layer;
 // docs/choices.md gives the measurement behind it.
 constexpr float kFarCrowdPixels = 16.0f;
+// The largest impostor (pixels across) whose pixels are spread from its quadrants' mean texels
+// instead of n x n sub-samples a pixel (far_crowd.glsl.inc, splatPixels); 0: none (tests, to compare
+// with the sub-samples). Under two pixels the sub-samples cost the most: docs/picture-quality.md.
+constexpr float kFarCrowdSplatPixels = 2.0f;
+
+// Which impostors the far layer takes, by their screen rectangle's longer side in pixels.
+struct FarCrowdSizes {
+    float averaged = kFarCrowdPixels;       // at most this: averaged into the layer
+    float splatted = kFarCrowdSplatPixels;  // under this: from the quadrants' means
+};
 
 class FarCrowdLayer {
 public:

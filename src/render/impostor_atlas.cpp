@@ -28,7 +28,10 @@ namespace {
 constexpr VkFormat kFormats[2] = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R8G8B8A8_UNORM};  // albedo, normal
 constexpr VkFormat kCaptureDepthFormat = VK_FORMAT_D32_SFLOAT;  // the bake's own depth, not the host's
 constexpr std::uint32_t kBytesPerTexel = 8;  // both arrays
-constexpr std::uint32_t kSmallestCell = 8;   // texels: the last mip level
+// Texels across a cell at the coarsest level filtered reads take: a bilinear read of a coarser one
+// would mix in the next cell. The chain goes on to a texel a cell, whose levels the far crowd reads
+// texel by texel (far_crowd.glsl.inc, splatPixels: two texels a cell, its quadrants' means).
+constexpr std::uint32_t kSmallestSampledCell = 8;
 constexpr std::uint32_t kLayerSide = 2048;   // texels per side of one array layer (at least one cell)
 
 struct CapturePush {
@@ -39,9 +42,10 @@ struct CapturePush {
     glm::uvec4 pose;
 };
 
-std::uint32_t mipLevelsFor(std::uint32_t cellSize) {
+// Levels down to `smallest` texels a cell.
+std::uint32_t mipLevelsFor(std::uint32_t cellSize, std::uint32_t smallest) {
     std::uint32_t levels = 1;
-    while ((cellSize >> levels) >= kSmallestCell) ++levels;
+    while ((cellSize >> levels) >= smallest) ++levels;
     return levels;
 }
 
@@ -79,7 +83,7 @@ ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, s
     // One cell size for the whole atlas. Over a model's budget its rarest cell sets go first (their
     // carriers show the nearest set: a missing flag on a few), then its frames per clip shrink, since a
     // far character's animation tolerates coarser steps better than a blurrier picture.
-    std::uint32_t cellSize = std::max(settings.cellSize, kSmallestCell);
+    std::uint32_t cellSize = std::max(settings.cellSize, kSmallestSampledCell);
     std::vector<std::uint32_t> frames(models.size(), std::max(settings.framesPerClip, 1u));
     std::vector<std::uint32_t> sets(models.size(), 1u);
     const std::uint64_t views = static_cast<std::uint64_t>(settings.azimuths) * settings.elevations;
@@ -93,7 +97,8 @@ ImpostorPlan planImpostors(std::span<const model::SkinnedModel* const> models, s
     }
     ImpostorPlan plan;
     plan.cellSize = cellSize;
-    plan.mipLevels = mipLevelsFor(cellSize);
+    plan.mipLevels = mipLevelsFor(cellSize, 1);
+    plan.sampledLevels = mipLevelsFor(cellSize, kSmallestSampledCell);
     plan.cellsPerRow = std::max(1u, kLayerSide / cellSize);
     const std::uint32_t perLayer = plan.cellsPerRow * plan.cellsPerRow;
     std::uint32_t first = 0;
@@ -242,7 +247,7 @@ void ImpostorAtlas::createSamplingSet() {
     info.magFilter = info.minFilter = VK_FILTER_LINEAR;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.maxLod = static_cast<float>(plan_.mipLevels - 1);
+    info.maxLod = static_cast<float>(plan_.sampledLevels - 1);
     VK_CHECK(vkCreateSampler(context_.device, &info, nullptr, &sampler_));
     // Fragment shaders sample it, and the compute rasterizer's coverage test (render/impostor_raster.h).
     constexpr VkShaderStageFlags stages = VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;

@@ -36,9 +36,9 @@ static_assert(offsetof(ResolvePush, viewport) == 16);
 ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                                const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
                                const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels,
-                               std::uint32_t resolveTilePixels, float farPixels)
+                               std::uint32_t resolveTilePixels, FarCrowdSizes far)
     : context_(context), crowd_(crowd), lists_(lists), atlas_(atlas), sceneSetLayout_(sceneSetLayout), target_(target),
-      resolveTilePixels_(resolveTilePixels), limitPixels_(limitPixels), farPixels_(farPixels), slots_(framesInFlight) {
+      resolveTilePixels_(resolveTilePixels), limitPixels_(limitPixels), far_(far), slots_(framesInFlight) {
     requireComputeRaster(context, target);
     try {
         split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -59,9 +59,11 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
         const VkDescriptorSetLayout rasterSets[2] = {rasterPrototype_->layout(), atlas.setLayout()};
         const VkPushConstantRange rasterPush{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::ImpostorRasterPush)};
         rasterLayout_ = gpu::createPipelineLayout(context, rasterSets, {&rasterPush, 1});
-        rasterPipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, {});
-        const std::uint32_t largePass[] = {1u};
-        largePipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, largePass);
+        // The shader's three passes (impostor_raster.comp.glsl, RASTER_PASS), each its own pipeline.
+        const std::uint32_t passes[3] = {0u, 1u, 2u};
+        rasterPipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, {&passes[0], 1});
+        largePipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, {&passes[1], 1});
+        splatPipeline_ = gpu::createComputePipeline(context, impostor_raster_comp_spv, rasterLayout_, {&passes[2], 1});
 
         const gpu::BufferBinding drawBindings[] = {{kStorage, pool.modelTable().buffer},
                                                    {kStorage, atlas.modelTable().buffer},
@@ -88,8 +90,10 @@ void ImpostorRaster::release() {
     resolve_.reset();
     if (resolveLayout_) vkDestroyPipelineLayout(context_.device, resolveLayout_, nullptr);
     if (rasterPipeline_) vkDestroyPipeline(context_.device, rasterPipeline_, nullptr);
-    if (largePipeline_) vkDestroyPipeline(context_.device, largePipeline_, nullptr);
-    largePipeline_ = VK_NULL_HANDLE;
+    for (VkPipeline* pipeline : {&largePipeline_, &splatPipeline_}) {
+        if (*pipeline) vkDestroyPipeline(context_.device, *pipeline, nullptr);
+        *pipeline = VK_NULL_HANDLE;
+    }
     if (rasterLayout_) vkDestroyPipelineLayout(context_.device, rasterLayout_, nullptr);
     resolveLayout_ = VK_NULL_HANDLE;
     rasterPipeline_ = VK_NULL_HANDLE, rasterLayout_ = VK_NULL_HANDLE;
@@ -185,7 +189,8 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                               static_cast<float>(IMPOSTOR_RASTER_LARGE_PIXELS));
     push.limits = glm::uvec4(capacity, groups * IMPOSTOR_RASTER_WORKGROUP,
                              std::min(capacity, context_.properties.limits.maxComputeWorkGroupCount[0]), blend ? 1u : 0u);
-    push.far = glm::vec4(averageFar ? farPixels_ : 0.0f, 0.0f, 0.0f, 0.0f);
+    push.far = glm::vec4(averageFar ? far_.averaged : 0.0f, far_.splatted,
+                         static_cast<float>(atlas_.plan().mipLevels - 2), 0.0f);  // z: two texels a cell
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, groups, 1, 1);
     // The large impostors: a workgroup each, as many as the first dispatch listed.
@@ -195,6 +200,17 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, largePipeline_);
     vkCmdDispatchIndirect(cmd, split_.buffer, offsetof(gpu::ImpostorSplit, largeDispatch));
+    // The far layer's splats: the whole list again, each thread splatting the impostors the first pass
+    // left for it. Apart from that pass, not among its sub-samples: on the H100 a warp doing both ran
+    // slower than either (10,000,000 from above: 9.4 ms a frame where the sub-samples alone took 8.3 ms
+    // and the splats, run alone, 3.8; docs/picture-quality.md).
+    if (averageFar && far_.splatted > 0.0f) {
+        gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},
+                           {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, splatPipeline_);
+        vkCmdDispatch(cmd, groups, 1, 1);
+    }
     // The impostor draws' pass reads the split's count, the colour draw the hardware list, the tile scan
     // and the resolve the visibility buffer.
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT},

@@ -21,6 +21,7 @@
 #include "gpu/descriptor_bundle.h"
 #include "render/crowd_buffers.h"
 #include "render/draw_lists.h"
+#include "render/far_crowd_layer.h"
 #include "render/geometry_pool.h"
 #include "render/far_crowd_layer.h"
 #include "render/impostor_atlas.h"
@@ -36,11 +37,11 @@ public:
     // `limitPixels`: the longest side of an impostor's screen rectangle the compute path draws
     // (infinity: every impostor not crossing the near plane). The target must be single-sampled.
     // `resolveTilePixels`: the resolve's tile side (VisibilityResolve; 0: every pixel of the viewport).
-    // `farPixels`: the largest impostor averaged into the far layer while far-crowd is on.
+    // `far`: which impostors the far layer takes while far-crowd is on (render/far_crowd_layer.h).
     ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                    const DrawLists& lists, const ImpostorAtlas& atlas, VkDescriptorSetLayout sceneSetLayout,
                    const TargetFormat& target, std::uint32_t framesInFlight, float limitPixels,
-                   std::uint32_t resolveTilePixels = kResolveTilePixels, float farPixels = kFarCrowdPixels);
+                   std::uint32_t resolveTilePixels = kResolveTilePixels, FarCrowdSizes far = {});
     ~ImpostorRaster();
     ImpostorRaster(const ImpostorRaster&) = delete;
     ImpostorRaster& operator=(const ImpostorRaster&) = delete;
@@ -92,7 +93,8 @@ private:
     VkDescriptorSetLayout sceneSetLayout_;
     TargetFormat target_;
     std::uint32_t resolveTilePixels_;
-    float limitPixels_, farPixels_;
+    float limitPixels_;
+    FarCrowdSizes far_;
     gpu::Buffer split_, hardwareList_;
     gpu::Buffer largeList_;  // the second dispatch's impostors (places in the impostor list)
     std::vector<Slot> slots_;
@@ -102,7 +104,8 @@ private:
     std::unique_ptr<gpu::DescriptorBundle> rasterPrototype_, resolvePrototype_;
     VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
     VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
-    VkPipeline largePipeline_ = VK_NULL_HANDLE;  // the same shader's second dispatch (LARGE_PASS)
+    VkPipeline largePipeline_ = VK_NULL_HANDLE;  // the same shader's second dispatch (the large impostors)
+    VkPipeline splatPipeline_ = VK_NULL_HANDLE;  // its third (the far layer's splats)
     VkPipelineLayout resolveLayout_ = VK_NULL_HANDLE;
     std::unique_ptr<VisibilityResolve> resolve_;
     std::unique_ptr<FarCrowdLayer> farLayer_;
