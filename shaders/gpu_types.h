@@ -259,6 +259,11 @@ struct ImpostorSplit {
 // splatted instead, which needs none.
 #define FAR_CROWD_SAMPLES_ACROSS 2.0
 #define FAR_CROWD_MOST_SUBSAMPLES 4
+// Texels across a cell at the coarsest level the atlas's filtered reads take (render/impostor_atlas.h).
+#define IMPOSTOR_SMALLEST_SAMPLED_CELL 8
+// Under this many pixels across, a far impostor's reads take their level from the atlas's whole mip
+// chain, not only down to IMPOSTOR_SMALLEST_SAMPLED_CELL texels a cell (far_crowd.glsl.inc, farUseGradients).
+#define FAR_CROWD_WHOLE_CHAIN_PIXELS 4.0
 
 // ---- Meshes in the compute rasterizer (render/mesh_raster.h, docs/compute-raster.md) ----
 // Small characters' skinned triangles go into a visibility buffer of their own (the same 64-bit words:

@@ -31,7 +31,7 @@ constexpr std::uint32_t kBytesPerTexel = 8;  // both arrays
 // Texels across a cell at the coarsest level filtered reads take: a bilinear read of a coarser one
 // would mix in the next cell. The chain goes on to a texel a cell, whose levels the far crowd reads
 // texel by texel (far_crowd.glsl.inc, splatPixels: two texels a cell, its quadrants' means).
-constexpr std::uint32_t kSmallestSampledCell = 8;
+constexpr std::uint32_t kSmallestSampledCell = IMPOSTOR_SMALLEST_SAMPLED_CELL;
 constexpr std::uint32_t kLayerSide = 2048;   // texels per side of one array layer (at least one cell)
 
 struct CapturePush {
@@ -201,7 +201,8 @@ void ImpostorAtlas::release() {
     if (descriptorPool_) vkDestroyDescriptorPool(context_.device, descriptorPool_, nullptr);
     if (setLayout_) vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
     if (sampler_) vkDestroySampler(context_.device, sampler_, nullptr);
-    descriptorPool_ = VK_NULL_HANDLE, setLayout_ = VK_NULL_HANDLE, sampler_ = VK_NULL_HANDLE;
+    if (wholeChainSampler_) vkDestroySampler(context_.device, wholeChainSampler_, nullptr);
+    descriptorPool_ = VK_NULL_HANDLE, setLayout_ = VK_NULL_HANDLE, sampler_ = VK_NULL_HANDLE, wholeChainSampler_ = VK_NULL_HANDLE;
     for (int i = 0; i < 2; ++i) {
         if (arrayViews_[i]) vkDestroyImageView(context_.device, arrayViews_[i], nullptr);
         if (images_[i]) vkDestroyImage(context_.device, images_[i], nullptr);
@@ -249,19 +250,26 @@ void ImpostorAtlas::createSamplingSet() {
     info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.maxLod = static_cast<float>(plan_.sampledLevels - 1);
     VK_CHECK(vkCreateSampler(context_.device, &info, nullptr, &sampler_));
+    // The far layer's reads (far_crowd.glsl.inc) reach every level: they keep their coordinates inside
+    // the cell by the level they read, so no bilinear tap reaches the next cell.
+    info.maxLod = static_cast<float>(plan_.mipLevels - 1);
+    VK_CHECK(vkCreateSampler(context_.device, &info, nullptr, &wholeChainSampler_));
     // Fragment shaders sample it, and the compute rasterizer's coverage test (render/impostor_raster.h).
+    // Bindings 0-1: albedo and normal, filtered reads down to 8 texels a cell; 2-3: the same, every level.
     constexpr VkShaderStageFlags stages = VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
-    const VkDescriptorSetLayoutBinding bindings[2] = {
+    const VkDescriptorSetLayoutBinding bindings[4] = {
         {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},
-        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr}};
+        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, nullptr}};
     setLayout_ = gpu::createSetLayout(context_, bindings);
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2};
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
     descriptorPool_ = gpu::createDescriptorPool(context_, {&size, 1}, 1);
     set_ = gpu::allocateSet(context_, descriptorPool_, setLayout_);
-    VkDescriptorImageInfo images[2];
-    VkWriteDescriptorSet writes[2];
-    for (std::uint32_t i = 0; i < 2; ++i) {
-        images[i] = {sampler_, arrayViews_[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo images[4];
+    VkWriteDescriptorSet writes[4];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        images[i] = {i < 2 ? sampler_ : wholeChainSampler_, arrayViews_[i % 2], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = set_;
         writes[i].dstBinding = i;
@@ -269,7 +277,7 @@ void ImpostorAtlas::createSamplingSet() {
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         writes[i].pImageInfo = &images[i];
     }
-    vkUpdateDescriptorSets(context_.device, 2, writes, 0, nullptr);
+    vkUpdateDescriptorSets(context_.device, 4, writes, 0, nullptr);
 }
 
 void ImpostorAtlas::bake(const GeometryPool& pool, std::span<const model::SkinnedModel* const> models,

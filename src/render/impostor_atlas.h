@@ -94,7 +94,8 @@ private:
     VkDeviceMemory memory_[2] = {};
     VkDeviceSize imageBytes_[2] = {};
     VkImageView arrayViews_[2] = {};
-    VkSampler sampler_ = VK_NULL_HANDLE;
+    VkSampler sampler_ = VK_NULL_HANDLE;            // filtered reads, down to 8 texels a cell
+    VkSampler wholeChainSampler_ = VK_NULL_HANDLE;  // every level (the far layer's reads)
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
