@@ -44,7 +44,6 @@ layout(std430, set = 0, binding = 8) readonly buffer CharacterStates { uint char
 layout(std430, set = 0, binding = 9) buffer FarDepth { uint64_t farDepth[]; };
 layout(std430, set = 0, binding = 10) buffer FarSums { uint64_t farSums[]; };  // 32-bit sums in pairs
 layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
-layout(set = 1, binding = 1) uniform sampler2DArray atlasNormal;
 // The same with every level of the mip chain, for the far layer's smallest impostors (far_crowd.glsl.inc, farUseGradients).
 layout(set = 1, binding = 2) uniform sampler2DArray atlasAlbedoWhole;
 layout(set = 1, binding = 3) uniform sampler2DArray atlasNormalWhole;

@@ -29,8 +29,8 @@ constexpr VkFormat kFormats[2] = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R8G8B8A8_UN
 constexpr VkFormat kCaptureDepthFormat = VK_FORMAT_D32_SFLOAT;  // the bake's own depth, not the host's
 constexpr std::uint32_t kBytesPerTexel = 8;  // both arrays
 // Texels across a cell at the coarsest level filtered reads take: a bilinear read of a coarser one
-// would mix in the next cell. The chain goes on to a texel a cell, whose levels the far crowd reads
-// texel by texel (far_crowd.glsl.inc, splatPixels: two texels a cell, its quadrants' means).
+// would mix in the next cell. The chain goes on to a texel a cell, for the far crowd's smallest
+// impostors (far_crowd.glsl.inc: farUseGradients, and splatPixels' quadrant means at two texels a cell).
 constexpr std::uint32_t kSmallestSampledCell = IMPOSTOR_SMALLEST_SAMPLED_CELL;
 constexpr std::uint32_t kLayerSide = 2048;   // texels per side of one array layer (at least one cell)
 

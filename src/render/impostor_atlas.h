@@ -3,8 +3,9 @@
 // phases and seen from azimuths x elevations over the upper hemisphere (render/impostor_cell.h),
 // rendered into cells of two RGBA8 texture arrays: albedo (sRGB; palette x base-colour texture,
 // untinted) and the model-space normal, each with coverage in alpha and a mip chain of box-filtered
-// levels: filtered reads stop at 8-texel cells, the far crowd's texel reads go on to 1-texel cells. Baked once at load time on the GPU (one command buffer, one draw per cell), bounded in
-// memory by ImpostorSettings::budgetPerModel.
+// levels. The usual sampler stops at 8-texel cells; a second one, for the far crowd's smallest
+// impostors, reaches the whole chain, down to 1-texel cells. Baked once at load time on the GPU (one
+// command buffer, one draw per cell), bounded in memory by ImpostorSettings::budgetPerModel.
 //
 // A cell shows the square, in the view's image plane, that holds the model's pose sphere: so every
 // pose of every clip fits, and an impostor is a quad over the character's pose sphere.
@@ -44,7 +45,7 @@ struct ImpostorPlan {
     // sets; the entries past them repeat set 0). Squares are the pose spheres' until the atlas widens them.
     std::vector<gpu::ImpostorModel> models;
     std::uint32_t cellSize = 0;
-    std::uint32_t mipLevels = 0;      // down to a texel a cell (the far crowd's means: texelFetch)
+    std::uint32_t mipLevels = 0;      // down to a texel a cell (the far crowd's second sampler)
     std::uint32_t sampledLevels = 0;  // of those, the ones filtered reads reach (8 texels a cell and more)
     std::uint32_t cellsPerRow = 0;
     std::uint32_t layers = 0;
