@@ -94,7 +94,7 @@ TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
 
 TEST(CrowdBench, BadValuesGiveOneLineErrors) {
     for (const char* arguments : {"--counts 0", "--counts 1,x", "--methods fast", "--pass-clock sundial", "--frames",
-                                  "--csv /nonexistent-dir/x.csv", "--counts 1,,2", "--counts 1,2,", "--csv ''",
+                                  "--csv /nonexistent-dir/x.csv", "--frame-log /nonexistent-dir/x.csv", "--counts 1,,2", "--counts 1,2,", "--csv ''",
                                   "--models soldier,bogus"}) {
         const test::ProgramResult r = test::runProgram(kBench, arguments);
         EXPECT_EQ(r.exitCode, 1) << arguments;
@@ -105,7 +105,7 @@ TEST(CrowdBench, BadValuesGiveOneLineErrors) {
 
 TEST(CrowdBench, FailedWritesExitOneNamingTheFile) {
     const std::string run = "--counts 1 --frames 1 --warmup 0 --size 32x32 --methods static --models soldier";
-    for (const std::string output : {"--csv", "--json"}) {
+    for (const std::string output : {"--csv", "--json", "--frame-log"}) {
         const test::ProgramResult r = test::runProgram(kBench, run + " " + output + " /dev/full");
         EXPECT_EQ(r.exitCode, 1) << output << ":\n" << r.err;
         const std::string lastLine = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);

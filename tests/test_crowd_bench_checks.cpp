@@ -1,12 +1,14 @@
 // crowd-bench decides before it measures: a count the host cannot hold is refused in one line, rows
 // the device cannot run are skipped up front (naming the clock that would have timed them), a run
-// that measured nothing fails, --palette writes its CSV, and its flags parse as crowd-render's do.
+// that measured nothing fails, --palette writes its CSV, its flags parse as crowd-render's do and its
+// help states crowd-render's defaults, and --frame-log holds the frames the summary's figures come from.
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -151,6 +153,83 @@ TEST(CrowdBenchChecks, HelpNamesEveryScene) {
     };
     for (const app::ScenePreset& preset : app::scenePresets())
         EXPECT_TRUE(namesWord(preset.name)) << preset.name << " missing from:\n" << scenes;
+}
+
+// Every flag both programs document states the same default in each help, but for --frames (the
+// bench measures 60 frames, crowd-render renders 30). crowd-bench's --far-crowd said "off" after the
+// default became "average".
+TEST(CrowdBenchChecks, HelpStatesCrowdRendersDefaults) {
+    auto defaults = [](const std::string& help) {
+        std::map<std::string, std::string> found;  // flag -> the text after "(default "
+        std::string flag, paragraph;
+        auto close = [&] {
+            const std::size_t at = paragraph.find("(default ");
+            if (!flag.empty() && at != std::string::npos)
+                found[flag] = paragraph.substr(at + 9, paragraph.find_first_of(");", at) - at - 9);
+        };
+        std::istringstream lines(help);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("  --", 0) == 0) {
+                close();
+                flag = line.substr(2, line.find(' ', 2) - 2);
+                paragraph = line;
+            } else if (line.rfind("      ", 0) == 0) {
+                paragraph.append(" ").append(line, line.find_first_not_of(' '), std::string::npos);
+            }
+        }
+        close();
+        return found;
+    };
+    const test::ProgramResult bench = test::runProgram(kBench, "--help");
+    const test::ProgramResult render = test::runProgram(CROWD_RENDER_BINARY, "--help");
+    ASSERT_EQ(bench.exitCode, 0);
+    ASSERT_EQ(render.exitCode, 0);
+    const std::map<std::string, std::string> benchDefaults = defaults(bench.out), renderDefaults = defaults(render.out);
+    std::size_t compared = 0;
+    for (const auto& [flag, value] : benchDefaults) {
+        const auto other = renderDefaults.find(flag);
+        if (other == renderDefaults.end() || flag == "--frames") continue;
+        EXPECT_EQ(value, other->second) << flag;
+        ++compared;
+    }
+    EXPECT_GE(compared, 12u) << "the helps' layout changed: too few defaults found to compare";
+}
+
+// The frame log (--frame-log): a row per measured frame of each configuration, at the scene times the
+// frames were rendered at; its intervals are what the summary's median and p95 are taken over.
+TEST(CrowdBenchChecks, TheFrameLogHoldsTheFramesTheSummaryComesFrom) {
+    const std::string log = tempFile("frames.csv"), csv = tempFile("summary.csv");
+    const test::ProgramResult r = test::runProgram(
+        kBench, "--counts 16 --methods compute,static --models soldier --frames 7 --warmup 3 --start 2 --size 32x32" +
+                    deviceFlag() + " --frame-log " + log + " --csv " + csv);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::vector<std::string> rows = lines(log), summary = lines(csv);
+    ASSERT_EQ(rows.size(), 1u + 2u * 7u);
+    ASSERT_EQ(summary.size(), 3u);
+    for (std::size_t config = 0; config < 2; ++config) {
+        std::vector<double> intervals;
+        for (std::size_t i = 0; i < 7; ++i) {
+            const std::size_t row = 1 + config * 7 + i;
+            EXPECT_EQ(column(rows, row, "method"), column(summary, 1 + config, "method"));
+            EXPECT_EQ(column(rows, row, "frame"), std::to_string(i));
+            // Frame k of a run is rendered at start + k / 60 s; the log starts after the warm-up.
+            EXPECT_NEAR(std::stod(column(rows, row, "scene_seconds")), 2.0 + (3.0 + i) / 60.0, 1e-4);
+            double passes = 0.0;
+            for (const char* pass : {"cull", "draw", "shadow", "motion"}) {
+                const double ms = std::stod(column(rows, row, std::string("gpu_") + pass + "_ms"));
+                EXPECT_GE(ms, 0.0) << pass;
+                passes += ms;
+            }
+            EXPECT_GE(std::stod(column(rows, row, "gpu_total_ms")), passes * 0.999);
+            intervals.push_back(std::stod(column(rows, row, "interval_ms")));
+        }
+        // The first measured frame's interval is the last warm-up frame's: every row has one.
+        EXPECT_TRUE(std::all_of(intervals.begin(), intervals.end(), [](double ms) { return ms > 0.0; }));
+        std::sort(intervals.begin(), intervals.end());
+        EXPECT_NEAR(intervals[3], std::stod(column(summary, 1 + config, "median_frame_ms")), 1e-3 * intervals[3]);
+    }
+    std::filesystem::remove(log);
+    std::filesystem::remove(csv);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "app/bench_table.h"
 
 #include <cstdio>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -110,6 +112,36 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
              << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << ",\"" << r.frame.animation << "\","
              << r.frame.medianShadowTriangles << ',' << r.frame.medianShadowImpostors << ',' << r.frame.antiAliasing << ','
              << r.frame.medianImpostors << ',' << passMs(r, "raster") << ',' << r.frame.raster << '\n';
+    }
+    io::writeFile(path, file.str());
+}
+
+void writeFrameLog(const std::string& path, const std::vector<BenchResult>& results) {
+    // Pass columns: every pass any frame timed, in name order (a pass a frame did not run is 0).
+    std::set<std::string> passes;
+    for (const BenchResult& r : results)
+        for (const FrameStats& frame : r.frame.measured)
+            for (const PassTime& pass : frame.gpu) passes.insert(pass.pass);
+    std::ostringstream file;
+    file << "model,method,characters,frame,scene_seconds,interval_ms,gpu_total_ms";
+    for (const std::string& pass : passes) file << ",gpu_" << pass << "_ms";
+    file << ",cpu_plan_ms,cpu_animate_ms,cpu_record_ms,visible_lod0,visible_lod1,visible_lod2,triangles,impostors,demoted\n";
+    for (const BenchResult& r : results) {
+        if (!r.ok) continue;
+        for (std::size_t i = 0; i < r.frame.measured.size(); ++i) {
+            const FrameStats& frame = r.frame.measured[i];
+            std::map<std::string, double> ms;
+            double total = 0.0;
+            for (const PassTime& pass : frame.gpu) ms[pass.pass] += pass.milliseconds, total += pass.milliseconds;
+            file << r.model << ',' << r.method << ',' << r.count << ',' << i << ',' << frame.sceneSeconds << ','
+                 << frame.intervalMs << ',' << total;
+            for (const std::string& pass : passes) file << ',' << ms[pass];
+            const crowdgpu::FrameCounts& lods = frame.lods;
+            file << ',' << frame.planMs << ',' << frame.animateMs << ',' << frame.recordMs << ',' << lods.characters[0]
+                 << ',' << lods.characters[1] << ',' << lods.characters[2] << ','
+                 << lods.triangles[0] + lods.triangles[1] + lods.triangles[2] << ',' << lods.impostors << ','
+                 << lods.demoted << '\n';
+        }
     }
     io::writeFile(path, file.str());
 }

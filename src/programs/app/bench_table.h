@@ -48,6 +48,11 @@ void printTable1(const std::vector<BenchResult>& results, const std::vector<std:
 void printPassTable(const std::vector<BenchResult>& results);
 
 void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results);
+// One row per measured frame of every configuration that ran: its scene time, wall-clock interval, GPU
+// passes (timestamp queries of the pipelined run, whatever the per-pass clock of the summary), CPU
+// phases and counts. The interval of a row is the wall clock since the frame before it started, as
+// the summary's frame times are, so its median and p95 are the CSV's.
+void writeFrameLog(const std::string& path, const std::vector<BenchResult>& results);
 void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::vector<BenchResult>& results);
 // What every benchmark JSON starts with: device, driver, commit, date, command.
 nlohmann::json benchJsonHeader(const BenchMeta& meta);

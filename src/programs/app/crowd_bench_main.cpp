@@ -47,7 +47,7 @@ usage: crowd-bench [options]
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --far-crowd average|off  impostors of 16 px or less drawn in compute add their coverage to a blended
-                       layer; off: each wins whole pixels or none (default off)
+                       layer; off: each wins whole pixels or none (default average)
   --events on|off      the GPU event buffer of the characters in view (default on; pass "events")
   --props on|off       soldiers carry their rifle (and one in eight a flag); off: the soldier without
                        props (default on; docs/props.md)
@@ -76,6 +76,8 @@ usage: crowd-bench [options]
                        1024,4096,16384,65536,262144,1000000; 10 frames, 3 warm-up unless given)
   --csv FILE           every figure as CSV
   --json FILE          every figure as JSON
+  --frame-log FILE     every measured frame as a CSV row (wall clock, GPU passes, CPU, counts): where a
+                       p95 comes from, frame by frame along the camera path
   --device INDEX|NAME  Vulkan device (see crowd-render --list-devices)
   --seed N             crowd layout seed (default 1)
   --validation         enable the Khronos validation layer
@@ -95,7 +97,7 @@ struct BenchOptions {
     std::vector<std::uint32_t> counts{1, 16, 64, 256, 1024, 2048, 4096};
     std::uint32_t frames = 60, warmup = 10, seed = 1;
     VkExtent2D size{1280, 720};
-    std::string passClock = "auto", csv, json, device, assetRoot;
+    std::string passClock = "auto", csv, json, frameLog, device, assetRoot;
     bool validation = false, help = false, palette = false;
 };
 
@@ -144,6 +146,7 @@ app::ExtraFlagParser benchFlags(BenchOptions& o, bool& quick) {
         } else if (flag == "--warmup") o.warmup = app::parseCount(flag, value(), 0, 100000);
         else if (flag == "--pass-clock") o.passClock = value();
         else if (flag == "--csv") o.csv = value();
+        else if (flag == "--frame-log") o.frameLog = value();
         else return false;
         return true;
     };
@@ -302,6 +305,7 @@ int runPalettes(const app::HostDevice& context, const app::CrowdModels& models, 
 int run(const BenchOptions& options, const std::string& command) {
     if (!options.csv.empty()) io::checkWritable(options.csv);
     if (!options.json.empty()) io::checkWritable(options.json);
+    if (!options.frameLog.empty()) io::checkWritable(options.frameLog);
     // Every model is loaded (and a bad one reported) before the device starts and progress is printed.
     std::vector<app::CrowdModels> crowds;
     for (const std::string& modelList : options.models)
@@ -351,6 +355,7 @@ int run(const BenchOptions& options, const std::string& command) {
                         options.frames, options.warmup, options.size.width, options.size.height};
     if (!options.csv.empty()) app::writeCsv(options.csv, meta, results);
     if (!options.json.empty()) app::writeBenchJson(options.json, meta, results);
+    if (!options.frameLog.empty()) app::writeFrameLog(options.frameLog, results);
     if (const int status = validationStatus(context)) return status;
     const auto skipped = std::find_if(results.begin(), results.end(), [](const app::BenchResult& r) { return !r.ok; });
     const std::size_t measured = static_cast<std::size_t>(

@@ -66,6 +66,7 @@ void CrowdRenderer::renderFrame(double time, const PresentHooks* hooks) {
     frame.stats = {};
     frame.stats.intervalMs = lastFrameStart_ < 0.0 ? 0.0 : start - lastFrameStart_;
     lastFrameStart_ = start;
+    frame.stats.sceneSeconds = time;
 
     // 1. Motion: new segments for the characters whose plan ran out (the host's call, not the library's).
     const double planStart = nowMs();

@@ -36,6 +36,7 @@ struct FrameStats {
     double animateMs = 0.0;  // CPU path: sampling clips and computing bone matrices (0 on the GPU path)
     double recordMs = 0.0;   // CPU: culling on the CPU (--cull cpu), recording and submitting
     double intervalMs = 0.0; // wall clock since the previous frame started (0 for the first)
+    double sceneSeconds = 0.0;  // the animation time the frame was rendered at (renderFrame's `time`)
     std::vector<PassTime> gpu;  // per pass, from timestamp queries
     crowdgpu::FrameCounts lods{};  // visible characters and triangles drawn per level of detail
 };

@@ -72,6 +72,7 @@ RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t wa
     summary.medianRecordMs = median(record);
     for (auto& [pass, values] : passes) summary.medianGpuMs[pass] = median(values);
     summary.medianGpuTotalMs = median(total);
+    summary.measured.assign(stats.begin() + static_cast<std::ptrdiff_t>(first), stats.end());
     return summary;
 }
 

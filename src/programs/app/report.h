@@ -52,6 +52,8 @@ struct RunSummary {
     // Device bytes per character of the crowd, by kind (app::CrowdRenderer::memoryPerCharacter).
     std::map<std::string, double> memoryPerCharacter;
     double atlasBakeMs = 0.0;  // 0: no impostor atlas
+    // The measured frames themselves, in order (crowd-bench --frame-log): what the medians summarize.
+    std::vector<app::FrameStats> measured;
 };
 
 // ", impostors off" or ", impostors below 32 px (mesh capacity 65536)": for the summary's culling line.
