@@ -1,4 +1,5 @@
 // The worker pool visits every index exactly once, for any count and chunk size, many times over.
+#include <algorithm>
 #include <atomic>
 #include <thread>
 #include <vector>
@@ -48,4 +49,23 @@ TEST(WorkerPool, CallersOnSeveralThreadsEachGetAllTheirWork) {
     other.join();
     EXPECT_EQ(first, 300u * 499500u);
     EXPECT_EQ(second, 300u * 499500u);
+}
+
+TEST(WorkerPool, WorkersThatWakeLateNeitherLoseNorRepeatWork) {
+    // Many more workers than cores: most wake after the caller and the first ones have taken every chunk
+    // (they skip the closed call, or join the next one). Each call still visits each index once, and
+    // returns with none of its work running.
+    crowd::WorkerPool pool(std::max(16u, 8 * std::thread::hardware_concurrency()));
+    for (int round = 0; round < 2000; ++round) {
+        const std::uint32_t count = 1 + static_cast<std::uint32_t>(round % 97) * 13;
+        std::vector<std::atomic<int>> visits(count);
+        std::atomic<int> running{0};
+        pool.parallelFor(count, 1 + round % 5, [&](std::uint32_t begin, std::uint32_t end) {
+            ++running;
+            for (std::uint32_t i = begin; i < end; ++i) visits[i]++;
+            --running;
+        });
+        ASSERT_EQ(running.load(), 0) << "round " << round;
+        for (std::uint32_t i = 0; i < count; ++i) ASSERT_EQ(visits[i].load(), 1) << "round " << round << " @" << i;
+    }
 }

@@ -227,8 +227,9 @@ double Crowd::wakeOf(std::uint32_t character) const {
 
 void Crowd::restateRecords() {
     // A new epoch restates every character (tens of nanoseconds each), else the changed ones: on every
-    // core, as planning is.
-    WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(lastChanged_.size()), 4096,
+    // core, as planning is, in chunks of 256 (a few microseconds), so that a frame's few thousand changed
+    // ones spread over every core (chunks of 4096 gave them to one or two).
+    WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(lastChanged_.size()), 256,
                                      [&](std::uint32_t begin, std::uint32_t end) {
                                          for (std::uint32_t i = begin; i < end; ++i) {
                                              const std::uint32_t c = lastChanged_[i];
@@ -273,14 +274,21 @@ void Crowd::advanceTo(double time) {
     // Only the characters whose plan runs out by `time` are visited. They plan independently (their
     // choices hash their own index), so any split of the work gives the same crowd.
     calendar_.takeDue(time, [this](std::uint32_t c) { return wakeOf(c); }, due_);
+    dueWakes_.resize(due_.size());
     std::atomic<std::uint64_t> planned{0};
     std::mutex earlierLock;
     EarlierSegments earlier;
-    WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(due_.size()), 64,
+    // Chunks of 16: a replan takes microseconds, and a frame's few thousand due characters in chunks of
+    // 64 left the last cores of 16 waiting on the slowest chunks. Each wake is found here too, on every
+    // core, for the calendar to file below (one core's random reads of a million agents otherwise).
+    WorkerPool::shared().parallelFor(static_cast<std::uint32_t>(due_.size()), 16,
                                      [&](std::uint32_t begin, std::uint32_t end) {
                                          std::uint64_t count = 0;
                                          EarlierSegments mine;
-                                         for (std::uint32_t i = begin; i < end; ++i) count += replan(due_[i], time, mine);
+                                         for (std::uint32_t i = begin; i < end; ++i) {
+                                             count += replan(due_[i], time, mine);
+                                             dueWakes_[i] = wakeOf(due_[i]);
+                                         }
                                          planned.fetch_add(count, std::memory_order_relaxed);
                                          if (mine.empty()) return;
                                          const std::lock_guard<std::mutex> hold(earlierLock);
@@ -302,9 +310,9 @@ void Crowd::advanceTo(double time) {
         std::sort(lastChanged_.begin(), lastChanged_.end());
         lastChanged_.erase(std::unique(lastChanged_.begin(), lastChanged_.end()), lastChanged_.end());
     }
-    for (const std::uint32_t c : due_) {
-        changed_[c] = 0u;
-        calendar_.file(c, wakeOf(c));
+    for (std::size_t i = 0; i < due_.size(); ++i) {
+        changed_[due_[i]] = 0u;
+        calendar_.file(due_[i], dueWakes_[i]);
     }
     added_.clear();
     restateRecords();

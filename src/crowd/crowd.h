@@ -229,6 +229,7 @@ private:
     std::vector<std::uint32_t> added_;   // characters added since the last advance
     WakeCalendar calendar_;              // when each character's plan next runs out
     std::vector<std::uint32_t> due_;     // the characters this advance visits
+    std::vector<double> dueWakes_;       // and when each next wakes, found beside its planning
     std::uint64_t generation_ = 0;
     // Key cursors of the sampling jobs, six per joint (two clips) per character: a cache of where each
     // track's keys were last found, private to the thread animating that character.

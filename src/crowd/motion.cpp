@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "anim/root_motion.h"
 
@@ -45,22 +46,35 @@ glm::vec2 travelledCurving(const gpu::MotionRecord& segment, float curved, const
                            std::uint32_t model) {
     // Planning evaluates this inside its solves (thousands of times a frame in a large milling crowd):
     // each step's end is the next step's start, so each clip's root motion is looked up once per step.
-    // The arithmetic is the GPU's (shaders/motion.glsl.inc), step for step.
+    // The arithmetic is the GPU's (shaders/motion.glsl.inc), step for step, and what is skipped here
+    // cannot change a bit of it: the from-clip's motion once its weight is 0 (the weight only grows,
+    // and 0 times a finite step adds nothing), the to-clip's lookup when it is the same clip, and a
+    // heading's sine and cosine when the heading has not changed since the last step.
     const glm::vec2* fromSamples = library.rootMotionSamples(model, segment.clips.x);
     const glm::vec2* toSamples = library.rootMotionSamples(model, segment.clips.y);
+    const bool sameClip = fromSamples == toSamples;
     glm::vec2 offset(0.0f);
     if (curved > 0.0f) {
         const float h = curved / static_cast<float>(MOTION_QUADRATURE_STEPS);
         const float phaseStart = motionPhase(segment, 0.0f);
-        glm::vec2 fromA = anim::rootMotionAt(fromSamples, phaseStart), toA = anim::rootMotionAt(toSamples, phaseStart);
+        glm::vec2 toA = anim::rootMotionAt(toSamples, phaseStart);
+        glm::vec2 fromA = sameClip ? toA : anim::rootMotionAt(fromSamples, phaseStart);
+        float heading = std::numeric_limits<float>::quiet_NaN(), c = 0.0f, s = 0.0f;
         for (int k = 0; k < MOTION_QUADRATURE_STEPS; ++k) {
             const float phaseB = motionPhase(segment, h * static_cast<float>(k + 1));
-            const glm::vec2 fromB = anim::rootMotionAt(fromSamples, phaseB), toB = anim::rootMotionAt(toSamples, phaseB);
             const float middle = h * (static_cast<float>(k) + 0.5f);
             const float w = motionWeight(segment, middle);
-            const glm::vec2 step = (fromB - fromA) * (1.0f - w) + (toB - toA) * w;
-            offset += turnToWorld(step, motionHeading(segment, middle));
-            fromA = fromB, toA = toB;
+            const glm::vec2 toB = anim::rootMotionAt(toSamples, phaseB);
+            glm::vec2 step = (toB - toA) * w;
+            if (w < 1.0f) {
+                const glm::vec2 fromB = sameClip ? toB : anim::rootMotionAt(fromSamples, phaseB);
+                step = (fromB - fromA) * (1.0f - w) + step;
+                fromA = fromB;
+            }
+            const float stepHeading = motionHeading(segment, middle);
+            if (stepHeading != heading) heading = stepHeading, c = std::cos(heading), s = std::sin(heading);
+            offset += glm::vec2(c * step.x + s * step.y, c * step.y - s * step.x);  // turnToWorld's
+            toA = toB;
         }
     }
     return offset;

@@ -23,7 +23,8 @@ public:
     void file(std::uint32_t character, double wake);
     // Every character whose current wake time (`wakeOf`) is at or before `time`, ascending and each
     // once, taken out of the calendar; the caller files them again once planned. Entries that went
-    // stale (their character's wake moved to another bucket) are dropped.
+    // stale (their character's wake moved to another bucket) are dropped. `wakeOf` is called on the
+    // shared worker pool's threads.
     void takeDue(double time, const std::function<double(std::uint32_t)>& wakeOf, std::vector<std::uint32_t>& due);
     // No character wakes before this time (a lower bound; kNever when nobody is filed).
     double earliest() const;
@@ -31,6 +32,10 @@ public:
 private:
     static std::int64_t bucketOf(double wake);
     std::map<std::int64_t, std::vector<std::uint32_t>> buckets_;
+    // takeDue's scratch, kept to spare a frame its allocations: the entries taken, their buckets, kinds.
+    std::vector<std::uint32_t> taken_;
+    std::vector<std::int64_t> takenBuckets_;
+    std::vector<std::uint8_t> kinds_;
 };
 
 }  // namespace crowd

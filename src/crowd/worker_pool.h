@@ -40,7 +40,8 @@ private:
     std::uint32_t chunk_ = 1;
     std::atomic<std::uint32_t> next_{0};
     std::uint64_t generation_ = 0;
-    unsigned busy_ = 0;
+    unsigned active_ = 0;  // workers that joined the current call and have not finished
+    bool closed_ = true;   // every chunk of the current call is taken: late wakers do not join
     bool stopping_ = false;
     std::vector<std::thread> threads_;
 };
