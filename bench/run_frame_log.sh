@@ -12,7 +12,7 @@
 # empty for the first device; SIZE (1920x1080); BIG (10000000) and MILL (1000000): the two crowds;
 # CAPACITY (65536): --mesh-capacity; RUNS: the names of the runs to make (default all six); BIN: the
 # folder of the crowd-bench to measure (default .devbin); TAG: a suffix of the results' names, for
-# two builds in one session.
+# two builds in one session; FLAGS: more crowd-bench flags for every run (e.g. "--threads 14").
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
 frames=${FRAMES:-600}
@@ -38,7 +38,7 @@ for config in "big-above:$big:in-place:0" "big-inside:$big:in-place:20" \
   [[ " $runs " == *" $name "* ]] || continue
   run "$name" "$bin/crowd-bench" "${device_flag[@]}" --scene stress --counts "$count" --models soldier \
     --behaviour "$behaviour" --start "$start" --impostors on --mesh-capacity "$capacity" --methods compute \
-    --frames "$frames" --warmup "$warmup" --size "$size" --csv "$res/$name.csv" --frame-log "$res/$name-frames.csv" &&
+    --frames "$frames" --warmup "$warmup" --size "$size" ${FLAGS:-} --csv "$res/$name.csv" --frame-log "$res/$name-frames.csv" &&
     printf '%-16s median %8.3f ms  p95 %8.3f ms\n' "$name" "$(csv_value "$res/$name.csv" median_frame_ms)" \
       "$(csv_value "$res/$name.csv" p95_frame_ms)"
 done

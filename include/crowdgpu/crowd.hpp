@@ -160,4 +160,13 @@ private:
 // it with the memory available before building a very large crowd.
 std::uint64_t hostBytesNeeded(const std::vector<Model>& models, std::uint64_t characters, bool cpuPalettes);
 
+// The CPU threads the library's parallel work shares (Crowd::advanceTo's planning, computePalettes on
+// every core, the renderer's CPU animation), counting the calling thread: 1 keeps it all on the caller's
+// thread, 0 (the default) takes one per core. A host with its own job system can leave it cores. The
+// results do not depend on it. Call it before any crowd work or while no thread uses a crowd: the
+// workers are made again. Throws Error (InvalidArgument) above 1024.
+void setWorkerThreads(unsigned threads);
+// The threads that work is shared by now, the calling thread's included.
+unsigned workerThreads();
+
 }  // namespace crowdgpu

@@ -103,6 +103,11 @@ crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, in
  * doubles: a crowd is as exact at 1e9 s as at 0 s. */
 crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time);
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
+/* The CPU threads the library's parallel work shares, the calling thread's included (0: one per core,
+ * the default; 1: all on the caller's thread; at most 1024): crowdgpu::setWorkerThreads. Before any
+ * crowd work, or while no thread uses a crowd. */
+crowdgpu_result crowdgpu_set_worker_threads(uint32_t threads);
+uint32_t crowdgpu_worker_threads(void);
 /* Joint `joint` of `character` in world space at `time`: 12 floats, the rows of a 3x4 matrix, its
  * last column the joint's position (crowdgpu::Crowd::jointWorld: exact with what the renderer draws;
  * times from one replan back on). About 50 ns a joint of the character's model. */

@@ -219,6 +219,12 @@ crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time) {
     return guarded([&] { crowd->crowd.advanceTo(time); });
 }
 
+crowdgpu_result crowdgpu_set_worker_threads(uint32_t threads) {
+    return guarded([&] { crowdgpu::setWorkerThreads(threads); });
+}
+
+uint32_t crowdgpu_worker_threads(void) { return crowdgpu::workerThreads(); }
+
 crowdgpu_result crowdgpu_crowd_joint_world(crowdgpu_crowd crowd, uint32_t character, uint32_t joint, double time,
                                            float out[12]) {
     if (!crowd || !out) return invalid("crowdgpu_crowd_joint_world: crowd or out is NULL");

@@ -166,6 +166,14 @@ std::uint64_t hostBytesNeeded(const std::vector<Model>& models, std::uint64_t ch
     return crowd::estimateHostBytes(detail::internalModels(models), characters, cpuPalettes);
 }
 
+void setWorkerThreads(unsigned threads) {
+    if (threads > 1024)
+        throw Error(ErrorCode::InvalidArgument, "worker threads: " + std::to_string(threads) + " is over 1024");
+    crowd::WorkerPool::setSharedThreads(threads);
+}
+
+unsigned workerThreads() { return crowd::WorkerPool::sharedThreads(); }
+
 const char* behaviourName(Behaviour behaviour) {
     return crowd::behaviourName(behaviour == Behaviour::March ? crowd::Behaviour::March
                                 : behaviour == Behaviour::Mill ? crowd::Behaviour::Mill

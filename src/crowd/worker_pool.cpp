@@ -1,6 +1,7 @@
 #include "crowd/worker_pool.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace crowd {
 
@@ -17,9 +18,33 @@ WorkerPool::~WorkerPool() {
     for (std::thread& t : threads_) t.join();
 }
 
+namespace {
+
+std::mutex sharedLock;
+std::unique_ptr<WorkerPool> sharedPool;
+unsigned sharedCount = 0;  // 0: one per core
+
+unsigned threadsFor(unsigned requested) {
+    return requested != 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
 WorkerPool& WorkerPool::shared() {
-    static WorkerPool pool;
-    return pool;
+    const std::lock_guard hold(sharedLock);
+    if (!sharedPool) sharedPool = std::make_unique<WorkerPool>(threadsFor(sharedCount));
+    return *sharedPool;
+}
+
+void WorkerPool::setSharedThreads(unsigned threads) {
+    const std::lock_guard hold(sharedLock);
+    sharedCount = threads;
+    sharedPool.reset();  // joins the old workers; the next call makes the new pool
+}
+
+unsigned WorkerPool::sharedThreads() {
+    const std::lock_guard hold(sharedLock);
+    return sharedPool ? static_cast<unsigned>(sharedPool->threads_.size()) + 1u : threadsFor(sharedCount);
 }
 
 void WorkerPool::runChunks() {

@@ -24,8 +24,14 @@ public:
     void parallelFor(std::uint32_t count, std::uint32_t chunk,
                      const std::function<void(std::uint32_t, std::uint32_t)>& work);
 
-    // The pool shared by the process, with one worker per core beyond the caller's.
+    // The pool shared by the process: setSharedThreads's count, else one thread per core (the caller's
+    // included, so one worker fewer).
     static WorkerPool& shared();
+    // Makes the shared pool again with `threads` threads, the caller's included (0: one per core; 1: no
+    // workers, every call on the caller's thread). Not while any thread is inside one of its calls.
+    static void setSharedThreads(unsigned threads);
+    // The shared pool's threads, the caller's included.
+    static unsigned sharedThreads();
 
 private:
     void workerLoop();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "crowdgpu/crowd.hpp"
 #include "app/bench_table.h"
 #include "app/benchmark_run.h"
 #include "app/crowd_app.h"
@@ -80,6 +81,8 @@ usage: crowd-bench [options]
                        p95 comes from, frame by frame along the camera path
   --device INDEX|NAME  Vulkan device (see crowd-render --list-devices)
   --seed N             crowd layout seed (default 1)
+  --threads N          CPU threads that planning and CPU animation share, this one included; 0: one
+                       per core (default 0)
   --validation         enable the Khronos validation layer
   --help               print this help
 crowd-render's other crowd and culling flags work too (--lod-thresholds, --lod-hysteresis, --clip),
@@ -374,6 +377,7 @@ int main(int argc, char** argv) {
         const std::vector<std::string> args(argv + 1, argv + argc);
         const BenchOptions options = parseBenchOptions(args);
         if (options.help) return std::printf("%s", kUsage), 0;
+        crowdgpu::setWorkerThreads(options.scene.threads);
         std::string command = "crowd-bench";
         for (const std::string& a : args) command += " " + a;
         return run(options, command);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "crowdgpu/crowd.hpp"
 #include "app/crowd_app.h"
 #include "app/options.h"
 #include "app/report.h"
@@ -172,6 +173,7 @@ int main(int argc, char** argv) {
             });
         if (options.help) return std::printf("%s", app::renderUsage()), 0;
         if (options.listDevices) return listDevices(), 0;
+        crowdgpu::setWorkerThreads(options.threads);
         if (!pose.time.empty() && pose.exportPose.empty()) throw app::Error("--time needs --export-pose");
         if (pose.listClips) return listClips(options);
         if (!pose.exportPose.empty()) return exportPose(options, pose);

@@ -89,6 +89,8 @@ usage: crowd-render [options]
   --json FILE             fps, median frame ms, median GPU ms per pass, device and driver
   --device INDEX|NAME     Vulkan device by index or name substring (see --list-devices)
   --seed N                seed of the crowd's layout, phases and speeds (default 1)
+  --threads N             CPU threads that planning and CPU animation share, this one included; 0: one
+                          per core (default 0)
   --validation            enable the Khronos validation layer (with synchronization checks)
   --list-devices          print the Vulkan devices and exit
   --list-clips            print the model, its levels of detail, pose sphere and clips and exit (no GPU)
@@ -281,6 +283,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--clip") options.scene.clip = next();
         else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);
+        else if (flag == "--threads") options.threads = parseCount(flag, next(), 0, 1024);
         else if (flag == "--frames") options.frames = parseCount(flag, next(), 1, 1000000);
         else if (flag == "--size") options.size = parseSize(flag, next());
         else if (flag == "--out") options.out = next();

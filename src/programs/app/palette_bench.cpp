@@ -87,7 +87,7 @@ std::vector<PaletteRow> runPaletteBench(const app::HostDevice& context, const Cr
     for (std::uint32_t count : options.counts) {
         PaletteRow row;
         row.characters = count;
-        row.threads = std::max(1u, std::thread::hardware_concurrency());
+        row.threads = crowdgpu::workerThreads();  // what computePalettes(allCores) shares (--threads)
         row.gpuClock = app::passClockName(options.clock);
         row.error = whyNotMeasurable(context, models, count, options.seed);
         if (!row.error.empty()) std::fprintf(stderr, "palettes: %u characters: skipped: %s\n", count, row.error.c_str());

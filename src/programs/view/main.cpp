@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "crowdgpu/crowd.hpp"
 #include "app/host_device.h"
 #include "app/error.h"
 #include "io/output_file.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
                 std::printf("%u: %s (%s, %s)\n", d.index, d.name.c_str(), d.type.c_str(), d.driver.c_str());
             return 0;
         }
+        crowdgpu::setWorkerThreads(options.render.threads);
         // A script's only output is checked before the window opens.
         if (!options.screenshot.empty()) io::checkWritable(options.screenshot);
         view::Viewer viewer(options);
