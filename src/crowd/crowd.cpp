@@ -277,7 +277,7 @@ void Crowd::advanceTo(double time) {
     dueWakes_.resize(due_.size());
     std::atomic<std::uint64_t> planned{0};
     std::mutex earlierLock;
-    EarlierSegments earlier;
+    std::vector<EarlierSegments> earlier;  // a chunk's each
     // Chunks of 16: a replan takes microseconds, and a frame's few thousand due characters in chunks of
     // 64 left the last cores of 16 waiting on the slowest chunks. Each wake is found here too, on every
     // core, for the calendar to file below (one core's random reads of a million agents otherwise).
@@ -292,12 +292,10 @@ void Crowd::advanceTo(double time) {
                                          planned.fetch_add(count, std::memory_order_relaxed);
                                          if (mine.empty()) return;
                                          const std::lock_guard<std::mutex> hold(earlierLock);
-                                         earlier.insert(earlier.end(), mine.begin(), mine.end());
+                                         earlier.push_back(std::move(mine));
                                      });
     planned_ += planned.load();
-    // A character's segments are all in one chunk, in order: appended as they come, they stay in order.
-    for (auto& [c, segment] : earlier) earlier_[c].push_back(std::move(segment));
-    for (const auto& [c, list] : earlier_) knownFrom_[c] = list.front().start;
+    keepEarlier(earlier);
     lastChanged_.clear();
     if (newEpoch) {
         epoch_ = epochOf(time);
@@ -317,6 +315,28 @@ void Crowd::advanceTo(double time) {
     added_.clear();
     restateRecords();
     ++generation_;
+}
+
+void Crowd::keepEarlier(std::vector<EarlierSegments>& chunks) {
+    // A chunk's segments come by character (due_ ascends), each one's in time order, and chunks cover
+    // ranges of characters that do not overlap: sorted by their first character and joined, they keep
+    // that order over the whole list.
+    std::sort(chunks.begin(), chunks.end(),
+              [](const EarlierSegments& a, const EarlierSegments& b) { return a.front().first < b.front().first; });
+    const bool more = !earlier_.empty();  // a second advance to the same time
+    for (const EarlierSegments& chunk : chunks) earlier_.insert(earlier_.end(), chunk.begin(), chunk.end());
+    if (more)
+        std::stable_sort(earlier_.begin(), earlier_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < earlier_.size(); ++i)
+        if (i == 0 || earlier_[i].first != earlier_[i - 1].first) knownFrom_[earlier_[i].first] = earlier_[i].second.start;
+}
+
+std::span<const std::pair<std::uint32_t, Segment>> Crowd::earlierOf(std::uint32_t character) const {
+    const auto first = std::lower_bound(earlier_.begin(), earlier_.end(), character,
+                                        [](const auto& entry, std::uint32_t c) { return entry.first < c; });
+    auto last = first;
+    while (last != earlier_.end() && last->first == character) ++last;
+    return {first, last};
 }
 
 void Crowd::checkCharacter(std::uint32_t character) const {
@@ -377,8 +397,8 @@ MotionState Crowd::stateKnown(std::uint32_t index, double time) const {
     const std::uint32_t model = characters_[index].model;
     if (time >= plans_[index].start || std::isinf(knownFrom_[index])) return stateAt(index, time);
     const Segment* segment = &previous_[index];
-    if (const auto found = earlier_.find(index); found != earlier_.end() && time < previous_[index].start)
-        for (const Segment& s : found->second)
+    if (time < previous_[index].start)
+        for (const auto& [character, s] : earlierOf(index))
             if (s.start <= time) segment = &s;
     return evaluateMotion(recordFrom(*segment, epoch_, library_, model), static_cast<float>(time - epoch_), library_,
                           model);
@@ -388,10 +408,10 @@ template <class F>
 void Crowd::forEachKnownSegment(std::uint32_t index, F&& f) const {
     const Segment& current = plans_[index];
     double previousFrom = knownFrom_[index];
-    if (const auto found = earlier_.find(index); found != earlier_.end()) {
-        const std::vector<Segment>& list = found->second;
+    if (const auto list = earlierOf(index); !list.empty()) {
         for (std::size_t i = 0; i < list.size(); ++i)
-            f(list[i], list[i].start, i + 1 < list.size() ? list[i + 1].start : previous_[index].start);
+            f(list[i].second, list[i].second.start,
+              i + 1 < list.size() ? list[i + 1].second.start : previous_[index].start);
         previousFrom = previous_[index].start;
     }
     if (!std::isinf(knownFrom_[index]) && previousFrom < current.start) f(previous_[index], previousFrom, current.start);
