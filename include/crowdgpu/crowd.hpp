@@ -98,9 +98,11 @@ public:
     // From time `at` crossfade over `fade` seconds to `clip` at `rate` and keep playing it.
     void play(std::uint32_t character, std::int32_t clip, double at, float fade = 0.3f, float rate = 1.0f);
     // Plans every character up to `time` seconds: the host calls it once per frame, before recording.
-    // Cost: the characters whose plan ran out (none for an in-place crowd); a time far ahead costs no
-    // more than the next frame's (the behaviours' episodes start from closed-form states). Times are
-    // doubles: a crowd is as exact at 1e9 s as at 0 s.
+    // Cost: the characters whose plan ran out (none for an in-place crowd; about 4,000 a 60 Hz frame of
+    // a milling 1,000,000, 3 ms on 16 cores). A time far ahead costs no more than one just past every
+    // plan: each character starts the episode holding it from a closed-form state (a milling 1,000,000
+    // jumping to 30 s or to 1e6 s: about 4 s on 2 cores, once). Times are doubles: a crowd is as exact
+    // at 1e9 s as at 0 s.
     void advanceTo(double time);
     CharacterState stateAt(std::uint32_t character, double time) const;
     // The character as it entered the crowd (its home position, model, scale, ...).
