@@ -9,24 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "skin/skinning_method.h"
+#include "support/csv_file.h"
 #include "support/run_program.h"
 
 namespace {
 
 const std::string kBench = CROWD_BENCH_BINARY;
-
-std::vector<std::string> splitCsvLine(const std::string& line) {
-    std::vector<std::string> fields;
-    std::string field;
-    bool quoted = false;
-    for (char c : line) {
-        if (c == '"') quoted = !quoted;
-        else if (c == ',' && !quoted) fields.push_back(field), field.clear();
-        else field += c;
-    }
-    fields.push_back(field);
-    return fields;
-}
 
 std::string tempFile(const std::string& name) {
     return (std::filesystem::temp_directory_path() / ("crowd-bench-" + std::to_string(::getpid()) + "-" + name)).string();
@@ -46,10 +34,10 @@ TEST(CrowdBench, QuickRunReportsEveryMethodModelAndSize) {
     std::ifstream csvFile(csv);
     std::string line;
     std::getline(csvFile, line);
-    const std::vector<std::string> header = splitCsvLine(line);
+    const std::vector<std::string> header = test::csvFields(line);
     std::set<std::string> seen;
     while (std::getline(csvFile, line)) {
-        const std::vector<std::string> row = splitCsvLine(line);
+        const std::vector<std::string> row = test::csvFields(line);
         ASSERT_EQ(row.size(), header.size()) << line;
         std::map<std::string, std::string> field;
         for (std::size_t i = 0; i < row.size(); ++i) field[header[i]] = row[i];

@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -22,6 +21,7 @@
 #include "crowd/host_memory.h"
 #include "gpu/vulkan_context.h"
 #include "render/geometry_pool.h"
+#include "support/csv_file.h"
 #include "support/run_program.h"
 
 namespace {
@@ -44,28 +44,6 @@ std::uint64_t storageRange() {
     return app::HostDevice({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
 }
 
-std::vector<std::string> lines(const std::string& path) {
-    std::ifstream file(path);
-    std::vector<std::string> result;
-    for (std::string line; std::getline(file, line);) result.push_back(line);
-    return result;
-}
-
-// The value of column `name` in row `row` (1: the first data row) of a CSV without commas in quotes
-// before that column.
-std::string column(const std::vector<std::string>& csv, std::size_t row, const std::string& name) {
-    auto split = [](const std::string& line) {
-        std::vector<std::string> fields;
-        std::stringstream stream(line);
-        for (std::string f; std::getline(stream, f, ',');) fields.push_back(f);
-        return fields;
-    };
-    const std::vector<std::string> header = split(csv.at(0)), fields = split(csv.at(row));
-    const auto at = std::find(header.begin(), header.end(), name);
-    return at == header.end() || static_cast<std::size_t>(at - header.begin()) >= fields.size()
-               ? "<no " + name + ">"
-               : fields[at - header.begin()];
-}
 
 TEST(CrowdBenchChecks, ACrowdTheHostCannotHoldIsRefusedInOneLineBeforeAnythingIsAllocated) {
     const app::CrowdModels soldier = app::loadModels("soldier", 1);
@@ -90,12 +68,12 @@ TEST(CrowdBenchChecks, PaletteRowsThatCannotRunAreSkippedBeforeMeasuringAndARunO
     EXPECT_EQ(r.exitCode, 0) << r.err;  // the row of 16 was measured
     // Decided up front: the skip is reported before the first row is measured.
     EXPECT_LT(r.err.find(std::to_string(over) + " characters: skipped"), r.err.find("palettes: 16 characters")) << r.err;
-    const std::vector<std::string> rows = lines(csv);
+    const std::vector<std::string> rows = test::readLines(csv);
     ASSERT_EQ(rows.size(), 3u) << "--palette --csv wrote no CSV";
-    EXPECT_EQ(column(rows, 1, "status"), "ok");
-    EXPECT_EQ(column(rows, 1, "gpu_clock"), "fence wall clock");
-    EXPECT_EQ(column(rows, 2, "status"), "skipped");
-    EXPECT_EQ(column(rows, 2, "gpu_clock"), "fence wall clock");
+    EXPECT_EQ(test::csvField(rows, 1, "status"), "ok");
+    EXPECT_EQ(test::csvField(rows, 1, "gpu_clock"), "fence wall clock");
+    EXPECT_EQ(test::csvField(rows, 2, "status"), "skipped");
+    EXPECT_EQ(test::csvField(rows, 2, "gpu_clock"), "fence wall clock");
     std::filesystem::remove(csv);
 
     const test::ProgramResult only = test::runProgram(kBench, "--palette --counts " + std::to_string(over) + kSmall + deviceFlag());
@@ -114,10 +92,10 @@ TEST(CrowdBenchChecks, SkippedRowsNameTheClockThatWouldHaveTimedThemAndARunOfOnl
     EXPECT_NE(r.err.find("crowd-bench: every configuration was skipped (first: soldier compute x " + std::to_string(over)),
               std::string::npos)
         << r.err;
-    const std::vector<std::string> rows = lines(csv);
+    const std::vector<std::string> rows = test::readLines(csv);
     ASSERT_EQ(rows.size(), 2u);
-    EXPECT_EQ(column(rows, 1, "status"), "skipped");
-    EXPECT_EQ(column(rows, 1, "pass_clock"), "fence wall clock");
+    EXPECT_EQ(test::csvField(rows, 1, "status"), "skipped");
+    EXPECT_EQ(test::csvField(rows, 1, "pass_clock"), "fence wall clock");
     std::filesystem::remove(csv);
 }
 
@@ -127,7 +105,7 @@ TEST(CrowdBenchChecks, FlagsParseAsCrowdRendersDo) {
         kBench, "--counts=1 --methods=static --models=soldier --frames=1 --warmup=0 --size=32x32 --lod-thresholds=20,10" +
                     deviceFlag() + " --csv=" + csv);
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(lines(csv).size(), 2u);
+    EXPECT_EQ(test::readLines(csv).size(), 2u);
     std::filesystem::remove(csv);
     for (const char* arguments : {"--quick=yes", "--count 4", "--out x.png", "--impostors on --impostor-threshold 60"}) {
         const test::ProgramResult bad = test::runProgram(kBench, arguments);
@@ -203,30 +181,30 @@ TEST(CrowdBenchChecks, TheFrameLogHoldsTheFramesTheSummaryComesFrom) {
         kBench, "--counts 16 --methods compute,static --models soldier --frames 7 --warmup 3 --start 2 --size 32x32" +
                     deviceFlag() + " --frame-log " + log + " --csv " + csv);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const std::vector<std::string> rows = lines(log), summary = lines(csv);
+    const std::vector<std::string> rows = test::readLines(log), summary = test::readLines(csv);
     ASSERT_EQ(rows.size(), 1u + 2u * 7u);
     ASSERT_EQ(summary.size(), 3u);
     for (std::size_t config = 0; config < 2; ++config) {
         std::vector<double> intervals;
         for (std::size_t i = 0; i < 7; ++i) {
             const std::size_t row = 1 + config * 7 + i;
-            EXPECT_EQ(column(rows, row, "method"), column(summary, 1 + config, "method"));
-            EXPECT_EQ(column(rows, row, "frame"), std::to_string(i));
+            EXPECT_EQ(test::csvField(rows, row, "method"), test::csvField(summary, 1 + config, "method"));
+            EXPECT_EQ(test::csvField(rows, row, "frame"), std::to_string(i));
             // Frame k of a run is rendered at start + k / 60 s; the log starts after the warm-up.
-            EXPECT_NEAR(std::stod(column(rows, row, "scene_seconds")), 2.0 + (3.0 + i) / 60.0, 1e-4);
+            EXPECT_NEAR(std::stod(test::csvField(rows, row, "scene_seconds")), 2.0 + (3.0 + i) / 60.0, 1e-4);
             double passes = 0.0;
             for (const char* pass : {"cull", "draw", "shadow", "motion"}) {
-                const double ms = std::stod(column(rows, row, std::string("gpu_") + pass + "_ms"));
+                const double ms = std::stod(test::csvField(rows, row, std::string("gpu_") + pass + "_ms"));
                 EXPECT_GE(ms, 0.0) << pass;
                 passes += ms;
             }
-            EXPECT_GE(std::stod(column(rows, row, "gpu_total_ms")), passes * 0.999);
-            intervals.push_back(std::stod(column(rows, row, "interval_ms")));
+            EXPECT_GE(std::stod(test::csvField(rows, row, "gpu_total_ms")), passes * 0.999);
+            intervals.push_back(std::stod(test::csvField(rows, row, "interval_ms")));
         }
         // The first measured frame's interval is the last warm-up frame's: every row has one.
         EXPECT_TRUE(std::all_of(intervals.begin(), intervals.end(), [](double ms) { return ms > 0.0; }));
         std::sort(intervals.begin(), intervals.end());
-        EXPECT_NEAR(intervals[3], std::stod(column(summary, 1 + config, "median_frame_ms")), 1e-3 * intervals[3]);
+        EXPECT_NEAR(intervals[3], std::stod(test::csvField(summary, 1 + config, "median_frame_ms")), 1e-3 * intervals[3]);
     }
     std::filesystem::remove(log);
     std::filesystem::remove(csv);

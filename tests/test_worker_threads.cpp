@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include "crowdgpu/crowdgpu.h"
 #include "crowdgpu/error.hpp"
 #include "crowdgpu/model.hpp"
+#include "support/csv_file.h"
 #include "support/run_program.h"
 
 namespace {
@@ -93,20 +93,9 @@ TEST(WorkerThreads, TheProgramsTakeThemFromTheCommandLine) {
     const test::ProgramResult bench = test::runProgram(
         CROWD_BENCH_BINARY, "--palette --threads 3 --counts 64 --frames 1 --warmup 0 --csv " + csv, "", 300);
     ASSERT_EQ(bench.exitCode, 0) << bench.err;
-    std::ifstream file(csv);
-    std::string header, row;
-    std::getline(file, header);
-    std::getline(file, row);
-    // cpu_threads is the fifth column (model,characters,joints,status,cpu_threads,...).
-    std::vector<std::string> fields;
-    for (std::size_t start = 0, comma; start <= row.size(); start = comma + 1) {
-        comma = row.find(',', start);
-        if (comma == std::string::npos) comma = row.size();
-        fields.push_back(row.substr(start, comma - start));
-    }
-    ASSERT_GE(fields.size(), 5u) << row;
-    EXPECT_EQ(header.rfind("model,characters,joints,status,cpu_threads,", 0), 0u) << header;
-    EXPECT_EQ(fields[4], "3") << row;
+    const std::vector<std::string> rows = test::readLines(csv);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(test::csvField(rows, 1, "cpu_threads"), "3") << rows[1];
     std::filesystem::remove(csv);
     for (const char* program : {CROWD_RENDER_BINARY, CROWD_BENCH_BINARY})
         for (const char* value : {"1025", "x", "-1"}) {
