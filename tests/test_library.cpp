@@ -176,6 +176,84 @@ TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
     }
 }
 
+// RendererSettings::ground draws the checkered ground inside recordCharacters, after the opaque
+// characters and before the far crowd's blended layer, so that the depth test rejects it under them
+// before it is shaded. The picture must be recordGround's before recordCharacters, pixel for pixel, in a
+// frame that has every kind of layer: meshes at two levels with fades, impostors through both
+// rasterizers, the far crowd's layer; with one sample and four. The frame without any ground differs
+// (the ground is drawn), and with the setting on recordGround is refused.
+TEST_F(GpuTest, GroundBehindTheCharactersDrawsRecordGroundsPicture) {
+    const VkExtent2D size{320, 180};
+    crowdgpu::GridLayout layout;
+    layout.count = 3000;
+    crowdgpu::Crowd crowd = crowdgpu::Crowd::grid({crowdgpu::Model::soldier(1)}, layout);
+    float center[3], radius, tallest;
+    crowd.bounds(center, radius, tallest);
+    // Four metres up just off the square's near edge (the bounding circle's radius over the square's
+    // half side is sqrt 2), looking at its middle: soldiers at LOD 1 below to ones a pixel tall, the
+    // ground between them.
+    const float edge = center[2] + radius / std::sqrt(2.0f);
+    const float eye[3] = {center[0], 4.0f, edge + 1.5f};
+    const float at[3] = {center[0], 0.0f, center[2]};
+    const double time = 1.0;
+    crowd.advanceTo(time);
+    const crowdgpu::FrameView view = crowdgpu::lookAt(eye, at, 0.8f, 0.1f, 400.0f, size, time);
+    HostDevice host(*context);
+    // The compute rasterizer's 64-bit atomics, optional features a host enables when it wants them.
+    host.features.features.shaderInt64 = host.vulkan12.shaderBufferInt64Atomics = context->int64Atomics;
+    for (const VkSampleCountFlagBits samples : {VK_SAMPLE_COUNT_1_BIT, VK_SAMPLE_COUNT_4_BIT}) {
+        crowdgpu::RendererSettings settings;
+        settings.target = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_D32_SFLOAT, samples};
+        settings.method = crowdgpu::Method::Compute;
+        settings.impostors = true;
+        settings.meshRasterLimit = 24.0f;  // the small meshes through the compute rasterizer's resolve too
+        crowdgpu::Renderer renderer(host.device, crowd, settings);
+        runSetup(*context, renderer);
+        app::RenderTarget target(*device, size, settings.target);
+        enum class Ground { Before, Behind, None };
+        auto frame = [&](Ground ground) {
+            renderer.setGround(ground == Ground::Behind);
+            gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+                renderer.recordCompute(cmd, 0, view);
+                renderer.recordShadows(cmd, 0);
+                const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
+                target.beginRendering(cmd, sky);
+                if (ground == Ground::Before) renderer.recordGround(cmd, 0);
+                renderer.recordCharacters(cmd, 0);
+                target.endRendering(cmd);
+            });
+            return target.readback();
+        };
+        const app::Rgba8Image before = frame(Ground::Before);
+        const crowdgpu::FrameCounts counts = renderer.counts(0);
+        const app::Rgba8Image behind = frame(Ground::Behind);
+        const app::Rgba8Image none = frame(Ground::None);
+        const std::string label = samples == VK_SAMPLE_COUNT_1_BIT ? "one sample" : "four samples";
+        // Every layer is in the frame (on lavapipe the impostors go through the compute rasterizer
+        // with one sample and the hardware one with four).
+        EXPECT_GT(counts.characters[1], 0u) << label;
+        EXPECT_GT(counts.characters[2], 0u) << label;
+        EXPECT_GT(counts.impostors, 500u) << label;
+        std::printf("ground behind the characters, %s: LOD %u/%u/%u, %u impostors; pixels equal to recordGround's "
+                    "%.4f, to no ground %.3f\n",
+                    label.c_str(), counts.characters[0], counts.characters[1], counts.characters[2], counts.impostors,
+                    test::fractionOfMatchingPixels(behind, before, 0), test::fractionOfMatchingPixels(none, before, 0));
+        EXPECT_EQ(test::fractionOfMatchingPixels(behind, before, 0), 1.0) << label;
+        EXPECT_LT(test::fractionOfMatchingPixels(none, before, 0), 0.92) << label << ": the ground is drawn";
+        renderer.setGround(true);
+        gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+            renderer.recordCompute(cmd, 0, view);
+            try {
+                renderer.recordGround(cmd, 0);
+                ADD_FAILURE() << "recordGround with the ground setting on: no error";
+            } catch (const crowdgpu::Error& error) {
+                EXPECT_EQ(error.code(), crowdgpu::ErrorCode::WrongOrder) << error.what();
+                EXPECT_NE(std::string(error.what()).find("recordCharacters"), std::string::npos) << error.what();
+            }
+        });
+    }
+}
+
 // Two renderers with two crowds in one host pass, two frames in flight, waiting only on each slot's
 // own fence: validation silent, and the last frame equals each crowd drawn alone where it stands.
 TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {

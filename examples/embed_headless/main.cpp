@@ -522,10 +522,9 @@ void recordColourPass(VkCommandBuffer cmd, const Target& target, crowdgpu::Rende
         const VkDeviceSize zero = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &host->vertices.buffer, &zero);
         vkCmdDraw(cmd, host->vertexCount, 1, 0, 0);
-    } else {
-        renderer.recordGround(cmd, slot);
     }
-    // The renderer binds its own pipelines and state; a host rebinds its own after it.
+    // The renderer binds its own pipelines and state; a host rebinds its own after it. Without the
+    // host's scene it draws its checkered ground behind the characters (RendererSettings::ground).
     renderer.recordCharacters(cmd, slot);
     vkCmdEndRendering(cmd);
 }
@@ -655,6 +654,7 @@ int main(int argc, char** argv) {
         settings.target.depth = kDepthFormat;
         settings.method = options.method;  // Compute, the default, skins into a buffer: output() has the vertices
         settings.framesInFlight = kFramesInFlight;
+        settings.ground = options.crowdOnly;  // crowd-render's frame: the library's ground, not the host's
         const crowdgpu::Device device{gpu.instance, gpu.physicalDevice, gpu.device, gpu.queueFamily, &gpu.features};
         crowdgpu::Renderer renderer(device, crowd, settings);
 

@@ -178,11 +178,12 @@ typedef struct crowdgpu_renderer_settings {
     uint32_t event_capacity;
     uint32_t shadow_cascades;  /* 1 to 4: the shadow map's cascades, split by distance */
     bool far_crowd;            /* impostors of 16 px or less averaged by coverage (else cut at half coverage) */
+    bool ground;               /* record_characters draws the checkered ground behind the characters */
 } crowdgpu_renderer_settings;
 
 /* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows (casters
    at their shadow level, rasterized in compute), raster auto, impostor blend, fades, events, the far crowd
-   averaged. */
+   averaged; no ground. */
 void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* settings);
 
 typedef struct crowdgpu_frame_view {

@@ -70,6 +70,7 @@ crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     r.eventCapacity = s.event_capacity;
     r.shadowCascades = s.shadow_cascades;
     r.farCrowd = s.far_crowd;
+    r.ground = s.ground;
     return r;
 }
 
@@ -290,6 +291,7 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
     s->event_capacity = d.eventCapacity;
     s->shadow_cascades = d.shadowCascades;
     s->far_crowd = d.farCrowd;
+    s->ground = d.ground;
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,

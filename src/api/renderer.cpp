@@ -106,6 +106,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.shadows = s.shadows;
     o.impostorBlend = s.impostorBlend;
     o.farCrowd = s.farCrowd;
+    o.ground = s.ground;
     o.shadowMapSize = s.shadowMapSize;
     o.shadowRaster = internalShadowRaster(s.shadowRaster);
     o.shadowCascades = s.shadowCascades;
@@ -344,6 +345,11 @@ void Renderer::setImpostorBlend(bool on) {
 void Renderer::setFarCrowd(bool on) {
     data_->frame->setFarCrowd(on);
     data_->settings.farCrowd = on;
+}
+
+void Renderer::setGround(bool on) {
+    data_->frame->setGround(on);
+    data_->settings.ground = on;
 }
 
 void Renderer::setCulling(Culling culling, bool lod) {

@@ -82,6 +82,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       shadowRasterPath_(options.shadowRaster),
       impostorBlend_(options.impostorBlend),
       farCrowd_(options.farCrowd),
+      ground_(options.ground),
       stages_(options.framesInFlight, Stage::Idle),
       views_(options.framesInFlight),
       cascades_(options.framesInFlight) {
@@ -319,6 +320,13 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
 
 void CrowdRecorder::recordGround(VkCommandBuffer cmd, std::uint32_t slot) const {
     checkStage("recordGround", slot, Stage::Computed);
+    if (ground_)
+        throw gpu::Error("recordGround: this renderer draws the ground in recordCharacters (its ground setting is on)",
+                         gpu::ErrorKind::WrongOrder);
+    drawGround(cmd, slot);
+}
+
+void CrowdRecorder::drawGround(VkCommandBuffer cmd, std::uint32_t slot) const {
     const render::FrameView& view = views_[slot];
     const render::Camera camera = render::cameraOf(view);
     gpu::setViewportAndScissor(cmd, view.viewport);
@@ -345,6 +353,10 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     // The compute-rasterized impostors, merged with all of the above by their depth.
     if (impostorRaster_) impostorRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport, impostorBlend_);
     if (meshPathOn_[slot]) meshRaster_->recordResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
+    // The ground after every opaque character, before the one blended layer: the depth test rejects it
+    // under the characters before it is shaded (a full-screen fragment pass costs the H100's graphics
+    // slice about 0.3 ms at 1080p; drawn first, its pixels under the characters were shaded for nothing).
+    if (ground_) drawGround(cmd, slot);
     // The far crowd's averaged layer, blended over everything opaque that is behind it.
     if (impostorRaster_) impostorRaster_->recordFarResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
     stages_[slot] = Stage::Idle;

@@ -65,6 +65,8 @@ struct RecorderOptions {
     // Tests: 0 averages the smallest far impostors by sub-samples too, the reference of their splats.
     float farCrowdSplatPixels = render::kFarCrowdSplatPixels;
     std::uint32_t shadowMapSize = 2048;  // texels per side
+    // recordCharacters draws the checkered ground after the opaque characters (crowdgpu::RendererSettings::ground).
+    bool ground = false;
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
     render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
     // Cascades of the shadow map, split by distance (render/shadow_cascades.h): 1 to 4.
@@ -186,6 +188,8 @@ public:
     bool impostorBlend() const { return impostorBlend_; }
     void setFarCrowd(bool on) { farCrowd_ = on; }
     bool farCrowd() const { return farCrowd_; }
+    void setGround(bool on) { ground_ = on; }
+    bool ground() const { return ground_; }
     render::AnimationPath animation() const { return animation_; }
 
     std::uint32_t framesInFlight() const { return framesInFlight_; }
@@ -230,6 +234,7 @@ private:
     enum class Stage { Idle, Computed, Shadowed };
     void checkSlot(const char* call, std::uint32_t slot) const;
     void checkStage(const char* call, std::uint32_t slot, Stage needed) const;
+    void drawGround(VkCommandBuffer cmd, std::uint32_t slot) const;
     // The path this frame takes: none when the method no longer reads bones; the CPU for the fixed
     // layout's one frame (it needs every character's bones, not only the visible ones).
     std::optional<render::AnimationPath> animationThisFrame() const;
@@ -280,6 +285,7 @@ private:
     std::unique_ptr<render::ShadowRaster> shadowRaster_;  // made when the compute path is first asked for
     bool impostorBlend_;
     bool farCrowd_;
+    bool ground_;  // recordCharacters draws the ground behind the opaque characters
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded

@@ -86,7 +86,10 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.raster = options.raster == render::RasterMode::Compute ? crowdgpu::Raster::Compute
                       : options.raster == render::RasterMode::Auto  ? crowdgpu::Raster::Auto
                                                                     : crowdgpu::Raster::Hardware;
-    return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, options, settings);
+    // The programs' frame (app::rendererSettings): the ground behind the characters.
+    frame::RecorderOptions recorder = options;
+    recorder.ground = settings.ground = true;
+    return crowdgpu::detail::makeRenderer(device.libraryDevice(), crowd, recorder, settings);
 }
 
 }  // namespace

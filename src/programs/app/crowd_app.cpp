@@ -162,6 +162,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.raster = cull.raster;
     settings.meshRasterLimit = cull.meshRasterLimit;
     settings.events = cull.events;
+    settings.ground = true;  // the programs' frame: the ground behind the characters (recordCharacters)
     return settings;
 }
 

@@ -95,8 +95,7 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double 
     const float* horizon = crowdgpu::kHorizonColor;
     const float clear[4] = {horizon[0], horizon[1], horizon[2], 1.0f};
     target_->beginRendering(cmd, clear);
-    renderer_.recordGround(cmd, slot);
-    renderer_.recordCharacters(cmd, slot);
+    renderer_.recordCharacters(cmd, slot);  // with the ground behind them (RendererSettings::ground)
     target_->endRendering(cmd);
     timer_.mark(cmd, "draw");
     if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());

@@ -2,8 +2,9 @@
 // The programs' frame driver: the reference embedding of the library. It owns what a host owns — the
 // device (app::HostDevice), command buffers, fences, the offscreen target, the pass timer and the
 // statistics — and draws each frame through crowdgpu::Renderer's public record calls:
-// plan (Crowd::advanceTo) -> recordCompute -> recordShadows -> begin the target's pass -> recordGround
-// -> recordCharacters -> end -> submit. A presenter (the viewer) adds its commands through PresentHooks.
+// plan (Crowd::advanceTo) -> recordCompute -> recordShadows -> begin the target's pass -> recordCharacters
+// (with the ground behind them: RendererSettings::ground) -> end -> submit. A presenter (the viewer)
+// adds its commands through PresentHooks.
 #include <cstdint>
 #include <functional>
 #include <map>
