@@ -5,9 +5,10 @@
 //                     -> GPU palettes -> skinning (the method) -> compute raster of impostors (--raster
 //                     compute|auto) -> impostor lists -> shadow map clear
 //   recordShadows     the shadow casters into the renderer's own shadow map (a depth pass of its own)
-//   recordGround      inside the host's colour pass: the checkered ground (optional)
+//   recordGround      inside the host's colour pass: the checkered ground (optional; refused with `ground` on)
 //   recordCharacters  inside the host's colour pass: the characters, then the impostors (hardware-drawn,
-//                     then the visibility buffer's resolve)
+//                     then the visibility buffer's resolve), then with `ground` on the ground behind them,
+//                     then the far crowd's blended layer
 // Nothing here submits, waits or signals. A frame slot's resources (bone staging, readback of the
 // level counts, uniforms) are reused when the slot comes round again: the host must have waited for
 // that slot's previous frame first. The crowd is planned by its owner (crowd::Crowd::advanceTo).
@@ -189,7 +190,6 @@ public:
     void setFarCrowd(bool on) { farCrowd_ = on; }
     bool farCrowd() const { return farCrowd_; }
     void setGround(bool on) { ground_ = on; }
-    bool ground() const { return ground_; }
     render::AnimationPath animation() const { return animation_; }
 
     std::uint32_t framesInFlight() const { return framesInFlight_; }
