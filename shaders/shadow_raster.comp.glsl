@@ -14,8 +14,9 @@
 // Rules kept from the hardware pass, so the two maps agree texel for texel but for edge rounding:
 // samples at texel centres; vertices snapped to 1/256 texel (the rasterizer's sub-pixel grid); the
 // top-left rule on texel centres that lie on an edge; both faces; depth interpolated in the
-// triangle's plane, clipped to [0, 1], biased as the hardware pass's pipeline is (1.0 x the minimum
-// resolvable difference of the triangle's largest depth + 1.5 x its depth slope per texel), clamped.
+// triangle's plane, clipped to [0, 1], biased as the hardware pass's pipeline is (1.0 x the map's
+// minimum resolvable difference + 1.5 x the depth slope per texel), clamped. The depths stay floats
+// here; shadow_pack.comp.glsl rounds them to the map's 16 bits as the hardware rounds its fragments'.
 #include "gpu_types.h"
 #include "triangle_coverage.glsl.inc"
 
@@ -25,7 +26,7 @@ layout(std430, set = 0, binding = 0) readonly buffer Draws { DrawIndexedCommand 
 layout(std430, set = 0, binding = 1) readonly buffer Totals { DrawTotals totals; };
 layout(std430, set = 0, binding = 2) readonly buffer Indices { uint indices[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Positions { vec4 positions[]; };  // skinned, world space
-layout(std430, set = 0, binding = 4) buffer Depth { uint depth[]; };  // the map, row-major, float bits
+layout(std430, set = 0, binding = 4) buffer Depth { uint depth[]; };  // the map, row-major, float bits (then packed)
 layout(std430, set = 0, binding = 5) readonly buffer ShadowStates { uint shadowStates[]; };  // per character
 
 layout(push_constant) uniform Push {
@@ -48,13 +49,9 @@ vec3 toMap(uint vertex, uint c) {
     return vec3(round(texel * kSubPixel) / kSubPixel, clip.z);
 }
 
-// The minimum resolvable difference of a D32_SFLOAT depth near z: one unit in the last place of the
-// triangle's largest depth (Vulkan's r for floating-point depth).
-float resolvable(float z) {
-    int exponent;
-    frexp(max(z, 1e-30), exponent);  // z = m * 2^exponent, m in [0.5, 1)
-    return ldexp(1.0, exponent - 1 - 23);
-}
+// The minimum resolvable difference of the map's D16_UNORM depth (Vulkan's r for a fixed-point
+// attachment: constant, one step of its 16 bits), for the constant bias the hardware pass applies.
+const float kResolvable = 1.0 / 65536.0;
 
 void writeDepth(ivec2 texel, float z) {
     atomicMin(depth[uint(texel.y) * push.sizes.x + uint(texel.x)], floatBitsToUint(clamp(z, 0.0, 1.0)));
@@ -80,7 +77,7 @@ void rasterize(vec3 p0, vec3 p1, vec3 p2, ivec4 square) {
     const TriangleCoverage t = triangleCoverageWithin(p0.xy, p1.xy, p2.xy, square.xy, square.zw);
     if (any(greaterThan(t.first, t.last))) return;
     const vec2 slopes = triangleDepthSlopes(p0, p1, p2, area);
-    const float bias = kBiasConstant * resolvable(max(max(p0.z, p1.z), p2.z)) + kBiasSlope * max(abs(slopes.x), abs(slopes.y));
+    const float bias = kBiasConstant * kResolvable + kBiasSlope * max(abs(slopes.x), abs(slopes.y));
     for (int y = t.first.y; y <= t.last.y; ++y) {
         for (int x = t.first.x; x <= t.last.x; ++x) {
             if (!triangleCovers(t, x, y)) continue;

@@ -286,7 +286,7 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
     if (compute) {
         shadowRaster_->rasterize(cmd, method_->skinnedVertices(), cascades);
-        shadowMap_.copyFrom(cmd, shadowRaster_->depth());
+        shadowMap_.copyFrom(cmd, shadowRaster_->mapTexels());
         if (impostorDraw_)
             shadowMap_.beginRenderingOver(cmd);
         else

@@ -6,6 +6,7 @@
 #include "render/ground_sunlight.h"
 #include "render/impostor_prop_sets.h"
 #include "render/mesh_raster.h"
+#include "render/shadow_raster.h"
 #include "skin/skin_target_layout.h"
 #include "skin/skinned_capacity.h"
 
@@ -70,10 +71,10 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                   {"culling lists and draw commands",
                    render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd),
                                                options.method == skin::Method::VertexShader)},
-                  {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4},
+                  {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 2},  // 16-bit depth
                   {"ground sunlight (shadow map on the ground)", render::GroundSunlight::bytesFor(options.shadowMapSize)}};
     if (options.shadowRaster == render::ShadowRasterPath::Compute)
-        plan.items.push_back({"shadow map depth (compute raster)", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 4});
+        plan.items.push_back({"shadow map depth (compute raster)", render::ShadowRaster::bytesFor(options.shadowMapSize)});
     if (options.events)
         plan.items.push_back({"event buffer, clip events, previous segments",
                               render::EventPass::bytesFor(crowd, options.eventCapacity, options.framesInFlight)});

@@ -28,7 +28,7 @@ Image createImage2D(const VulkanContext& context, VkExtent2D extent, VkFormat fo
     try {
         result.memory = allocateMemory(context, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, what);
         VK_CHECK(vkBindImageMemory(context.device, result.image, result.memory, 0));
-        const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT;
+        const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D24_UNORM_S8_UINT;
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = result.image;
         viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;

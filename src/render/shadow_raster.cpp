@@ -12,6 +12,7 @@
 #include "render/geometry_pool.h"
 #include "render/shadow_cascades.h"
 #include "render/shadow_map.h"
+#include "shadow_pack.comp.spv.h"
 #include "shadow_raster.comp.spv.h"
 
 namespace render {
@@ -46,17 +47,43 @@ constexpr std::uint32_t kFarDepthBits = 0x3F800000u;  // 1.0f: the cleared map
 
 constexpr gpu::Access kComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+constexpr gpu::Access kComputeRead{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+constexpr gpu::Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+constexpr gpu::Access kCopyRead{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
+
+constexpr std::uint32_t kPackGroupSize = 256;  // shadow_pack.comp.glsl's local_size_x
+
+std::uint64_t texelsOf(std::uint32_t size) { return std::uint64_t{size} * size; }
+// Two 16-bit texels a word, the last word half used when the count is odd.
+std::uint64_t packedWordsOf(std::uint32_t size) { return (texelsOf(size) + 1) / 2; }
 
 }  // namespace
 
 ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const DrawLists& lists,
                            const ShadowMap& map)
     : context_(context), pool_(pool), lists_(lists), size_(map.size()) {
-    depth_ = gpu::createBuffer(context, VkDeviceSize{size_} * size_ * 4,
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+    static_assert(kShadowFormat == VK_FORMAT_D16_UNORM, "shadow_pack.comp.glsl writes 16-bit unorm texels");
+    depth_ = gpu::createBuffer(context, texelsOf(size_) * 4,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                gpu::MemoryUse::DeviceLocal, "shadow map depth (compute raster)");
+    try {
+        packed_ = gpu::createBuffer(context, packedWordsOf(size_) * 4,
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                    gpu::MemoryUse::DeviceLocal, "shadow map texels (compute raster, packed)");
+        constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const gpu::BufferBinding bindings[] = {{storage, depth_.buffer}, {storage, packed_.buffer}};
+        packSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
+        const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(std::uint32_t)};
+        const VkDescriptorSetLayout sets[] = {packSet_->layout()};
+        packLayout_ = gpu::createPipelineLayout(context, sets, {&push, 1});
+        packPipeline_ = gpu::createComputePipeline(context, shadow_pack_comp_spv, packLayout_, {});
+    } catch (...) {
+        release();
+        throw;
+    }
 }
+
+std::uint64_t ShadowRaster::bytesFor(std::uint32_t size) { return texelsOf(size) * 4 + packedWordsOf(size) * 4; }
 
 ShadowRaster::~ShadowRaster() { release(); }
 
@@ -66,6 +93,12 @@ void ShadowRaster::release() {
     rasterPipeline_ = VK_NULL_HANDLE;
     rasterLayout_ = VK_NULL_HANDLE;
     rasterSet_.reset();
+    if (packPipeline_) vkDestroyPipeline(context_.device, packPipeline_, nullptr);
+    if (packLayout_) vkDestroyPipelineLayout(context_.device, packLayout_, nullptr);
+    packPipeline_ = VK_NULL_HANDLE;
+    packLayout_ = VK_NULL_HANDLE;
+    packSet_.reset();
+    gpu::destroyBuffer(context_, packed_);
     gpu::destroyBuffer(context_, depth_);
 }
 
@@ -96,9 +129,8 @@ void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
 
 void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades) {
     bindVertices(vertices);
-    // The previous frame's copy into the map read the buffer: done before it is cleared.
-    gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT},
-                       {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    // The previous frame's pack read the depths: done before they are cleared.
+    gpu::bufferBarrier(cmd, depth_.buffer, kComputeRead, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
     vkCmdFillBuffer(cmd, depth_.buffer, 0, VK_WHOLE_SIZE, kFarDepthBits);
     gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        kComputeReadWrite);
@@ -115,8 +147,21 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     const RasterPush push = pushFor(cascades, size_, perRow, lists_.drawCapacity());
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, cascades.count);
-    gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite,
-                       {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT});
+    recordPack(cmd);
+}
+
+void ShadowRaster::recordPack(VkCommandBuffer cmd) {
+    // The depths are final; the previous frame's copy into the map read the packed texels.
+    gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite, kComputeRead);
+    gpu::bufferBarrier(cmd, packed_.buffer, kCopyRead, kComputeWrite);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, packPipeline_);
+    const VkDescriptorSet set = packSet_->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, packLayout_, 0, 1, &set, 0, nullptr);
+    const auto texels = static_cast<std::uint32_t>(texelsOf(size_));
+    vkCmdPushConstants(cmd, packLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof texels, &texels);
+    const std::uint64_t groups = (packedWordsOf(size_) + kPackGroupSize - 1) / kPackGroupSize;
+    vkCmdDispatch(cmd, static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, kMostGroupsPerRow)), 1, 1);
+    gpu::bufferBarrier(cmd, packed_.buffer, kComputeWrite, kCopyRead);
 }
 
 }  // namespace render

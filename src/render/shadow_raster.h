@@ -2,8 +2,9 @@
 // The shadow map's mesh casters rasterized in compute instead of by the graphics pipeline (issue 18,
 // "the raster wall": on the H100 the hardware rasterizer is a small graphics slice, compute is every
 // SM). A depth-only map needs no more than a 32-bit atomic min per texel: the casters' triangles go to
-// a buffer of depth bits (shaders/shadow_raster.comp.glsl), which is copied into the shadow map's depth
-// image, where the impostor casters are drawn over it as before. The map is
+// a buffer of depth bits (shaders/shadow_raster.comp.glsl), packed to the map's 16-bit texels
+// (shaders/shadow_pack.comp.glsl) and copied into the shadow map's depth image, where the impostor
+// casters are drawn over it as before. The map is
 // the hardware pass's texel for texel but for rounding on triangle edges (tests/test_shadow_raster.cpp).
 // Only for methods whose skinned vertices are in a buffer (not the `vs` baseline, which skins while
 // it draws), and only when that buffer's position stream fits one storage binding.
@@ -48,23 +49,31 @@ public:
     void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades);
     // The skinned vertices' buffer is going away (a method switch): bind the next one afresh.
     void forgetVertices() { boundVertices_ = VK_NULL_HANDLE; }
-    // The rasterized depth, one float per map texel (ShadowMap::copyFrom takes it into the map).
-    VkBuffer depth() const { return depth_.buffer; }
-    VkDeviceSize bytes() const { return depth_.size; }
+    // The rasterized depth in the map's texel format (kShadowFormat, row-major), ready for
+    // ShadowMap::copyFrom after rasterize.
+    VkBuffer mapTexels() const { return packed_.buffer; }
+    VkDeviceSize bytes() const { return depth_.size + packed_.size; }
+    // Device bytes for a map `size` texels a side: the float depths and the packed texels.
+    static std::uint64_t bytesFor(std::uint32_t size);
 
 private:
     void bindVertices(const SkinnedVertices& vertices);
+    void recordPack(VkCommandBuffer cmd);
     void release();
 
     const gpu::VulkanContext& context_;
     const GeometryPool& pool_;
     const DrawLists& lists_;
     std::uint32_t size_ = 0;
-    gpu::Buffer depth_;
+    gpu::Buffer depth_;   // one float's bits a texel: the atomic min's target
+    gpu::Buffer packed_;  // the same depths as the map's 16-bit texels, two a word: the copy's source
     VkBuffer boundVertices_ = VK_NULL_HANDLE;
     std::unique_ptr<gpu::DescriptorBundle> rasterSet_;
     VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
     VkPipeline rasterPipeline_ = VK_NULL_HANDLE;
+    std::unique_ptr<gpu::DescriptorBundle> packSet_;
+    VkPipelineLayout packLayout_ = VK_NULL_HANDLE;
+    VkPipeline packPipeline_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render
