@@ -185,7 +185,7 @@ TEST(CrowdBenchChecks, TheFrameLogHoldsTheFramesTheSummaryComesFrom) {
     ASSERT_EQ(rows.size(), 1u + 2u * 7u);
     ASSERT_EQ(summary.size(), 3u);
     for (std::size_t config = 0; config < 2; ++config) {
-        std::vector<double> intervals;
+        std::vector<double> intervals, shadowTriangles;
         for (std::size_t i = 0; i < 7; ++i) {
             const std::size_t row = 1 + config * 7 + i;
             EXPECT_EQ(test::csvField(rows, row, "method"), test::csvField(summary, 1 + config, "method"));
@@ -200,7 +200,13 @@ TEST(CrowdBenchChecks, TheFrameLogHoldsTheFramesTheSummaryComesFrom) {
             }
             EXPECT_GE(std::stod(test::csvField(rows, row, "gpu_total_ms")), passes * 0.999);
             intervals.push_back(std::stod(test::csvField(rows, row, "interval_ms")));
+            shadowTriangles.push_back(std::stod(test::csvField(rows, row, "shadow_triangles")));
+            EXPECT_EQ(test::csvField(rows, row, "shadow_impostors"), "0");  // no impostors in this crowd
         }
+        // The shadow pass's casters, frame by frame: the summary's median is theirs.
+        std::sort(shadowTriangles.begin(), shadowTriangles.end());
+        EXPECT_GT(shadowTriangles[3], 0.0);
+        EXPECT_EQ(shadowTriangles[3], std::stod(test::csvField(summary, 1 + config, "shadow_triangles")));
         // The first measured frame's interval is the last warm-up frame's: every row has one.
         EXPECT_TRUE(std::all_of(intervals.begin(), intervals.end(), [](double ms) { return ms > 0.0; }));
         std::sort(intervals.begin(), intervals.end());

@@ -125,7 +125,8 @@ void writeFrameLog(const std::string& path, const std::vector<BenchResult>& resu
     std::ostringstream file;
     file << "model,method,characters,frame,scene_seconds,interval_ms,gpu_total_ms";
     for (const std::string& pass : passes) file << ",gpu_" << pass << "_ms";
-    file << ",cpu_plan_ms,cpu_animate_ms,cpu_record_ms,visible_lod0,visible_lod1,visible_lod2,triangles,impostors,demoted\n";
+    file << ",cpu_plan_ms,cpu_animate_ms,cpu_record_ms,visible_lod0,visible_lod1,visible_lod2,triangles,impostors,demoted,"
+            "shadow_triangles,shadow_impostors\n";
     for (const BenchResult& r : results) {
         if (!r.ok) continue;
         for (std::size_t i = 0; i < r.frame.measured.size(); ++i) {
@@ -140,7 +141,8 @@ void writeFrameLog(const std::string& path, const std::vector<BenchResult>& resu
             file << ',' << frame.planMs << ',' << frame.animateMs << ',' << frame.recordMs << ',' << lods.characters[0]
                  << ',' << lods.characters[1] << ',' << lods.characters[2] << ','
                  << lods.triangles[0] + lods.triangles[1] + lods.triangles[2] << ',' << lods.impostors << ','
-                 << lods.demoted << '\n';
+                 << lods.demoted << ',' << lods.shadowTriangles[0] + lods.shadowTriangles[1] + lods.shadowTriangles[2]
+                 << ',' << lods.shadowImpostors << '\n';
         }
     }
     io::writeFile(path, file.str());
