@@ -171,7 +171,7 @@ typedef struct crowdgpu_renderer_settings {
     crowdgpu_raster raster;
     float mesh_raster_limit;   /* -1: automatic; 0: meshes never in compute; > 0: that many pixels */
     bool shadow_lod;           /* casters at a level from their size in the shadow map */
-    bool shadow_raster_compute; /* the shadow map's mesh casters rasterized in compute (else hardware) */
+    bool shadow_raster_compute; /* the shadow map's casters rasterized in compute (else hardware) */
     bool impostor_blend;       /* impostors blend views, bands and frames (else the nearest cell) */
     bool lod_fade;             /* level changes fade over a dithered band (else switch at once) */
     bool events;               /* animation events of the characters in view, in the frame's output */

@@ -76,10 +76,10 @@ inline constexpr float kHorizonColor[3] = {0.55f, 0.7f, 0.9f};
 enum class Method { TwoPass, TwoPassDirect, VertexShader, VertexShaderInstanced, Compute, Static };
 enum class Animation { Gpu, Cpu };
 enum class Culling { Gpu, Cpu, Off };
-// How the shadow map's mesh casters are rasterized: by the graphics pipeline, or in compute (a 32-bit
+// How the shadow map's casters are rasterized: by the graphics pipeline, or in compute (a 32-bit
 // atomic min of depth per texel, on every shader core instead of the graphics slice). Compute applies
 // to the methods whose skinned vertices are in a buffer (all but vs and vs-instanced, which keep the
-// graphics pipeline); impostor casters stay on the graphics pipeline.
+// graphics pipeline for every caster); the impostor-level casters go with the meshes.
 enum class ShadowRaster { Hardware, Compute };
 // Which rasterizer draws the impostors (docs/compute-raster.md): the hardware's; a compute pass into a
 // visibility buffer (64-bit atomics), resolved in the colour pass; or each impostor by its size on

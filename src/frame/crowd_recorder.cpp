@@ -284,10 +284,14 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     const bool compute = rastersShadowsInCompute();
     const render::ShadowCascades& cascades = cascades_[slot];
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f), glm::vec4(0.0f)};
+    // Impostor casters in compute beside the mesh casters (render/impostor_shadow_raster.h).
+    const bool impostorsInCompute = compute && impostorShadowRaster();
     if (compute) {
         shadowRaster_->rasterize(cmd, method_->skinnedVertices(), cascades);
+        if (impostorsInCompute) impostorShadowRaster_->record(cmd, cascades, impostorBlend_);
+        shadowRaster_->pack(cmd);
         shadowMap_.copyFrom(cmd, shadowRaster_->mapTexels());
-        if (impostorDraw_)
+        if (impostorDraw_ && !impostorsInCompute)
             shadowMap_.beginRenderingOver(cmd);
         else
             shadowMap_.copyDone(cmd);  // no casters left to draw: no rendering pass at all
@@ -301,21 +305,29 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
                          render::CharacterDraw::Target::ShadowMap);
         }
     }
-    // Impostor-level casters: a quad facing the light each, cut by the atlas's coverage.
-    if (impostorDraw_) {
+    // Impostor-level casters on the hardware path: a quad facing the light each, cut by the atlas's coverage.
+    if (impostorDraw_ && !impostorsInCompute) {
         for (std::uint32_t c = 0; c < cascades.count; ++c) {
             const VkRect2D square = cascades.texels(c, shadowMap_.size());
             vkCmdSetScissor(cmd, 0, 1, &square);
             impostorDraw_->recordShadows(cmd, scene_.lightSet(slot, c), push, impostorBlend_);
         }
     }
-    if (!compute || impostorDraw_) shadowMap_.endRendering(cmd);
+    if (!compute || (impostorDraw_ && !impostorsInCompute)) shadowMap_.endRendering(cmd);
     // The ground's sunlight from the finished map, in compute, for the ground's one fetch a pixel.
     groundSunlight_.record(cmd, cascades, render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
                            groundSunlight_.firstLevel(views_[slot].viewport.extent));
     shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
     gpu::passDone(passes_, cmd, "shadow");
+}
+
+render::ImpostorShadowRaster* CrowdRecorder::impostorShadowRaster() {
+    if (!impostorDraw_ || !atlas_ || !impostorShadowsInCompute_) return nullptr;
+    if (!impostorShadowRaster_)
+        impostorShadowRaster_ = std::make_unique<render::ImpostorShadowRaster>(
+            context_, buffers_, lists_, *atlas_, shadowRaster_->depthBits(), shadowMap_.size());
+    return impostorShadowRaster_.get();
 }
 
 void CrowdRecorder::recordGround(VkCommandBuffer cmd, std::uint32_t slot) const {

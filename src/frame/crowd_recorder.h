@@ -37,6 +37,7 @@
 #include "render/impostor_atlas.h"
 #include "render/impostor_draw.h"
 #include "render/impostor_raster.h"
+#include "render/impostor_shadow_raster.h"
 #include "render/mesh_raster.h"
 #include "render/raster_mode.h"
 #include "render/scene_pass.h"
@@ -176,6 +177,9 @@ public:
     // Whether this frame's mesh casters go through the compute rasterizer (the path asks for it and the
     // method's skinned vertices can be read by it).
     bool rastersShadowsInCompute() const;
+    // With the mesh casters in compute, the impostor casters go there too (on by default); off, they are
+    // drawn by the graphics pipeline over the copied map, as before (tests compare the two).
+    void setImpostorShadowsInCompute(bool on) { impostorShadowsInCompute_ = on; }
     const render::ShadowMap& shadowMap() const { return shadowMap_; }
     // The shadow map's cascades, 1 to render::kMostShadowCascades (render/shadow_cascades.h).
     void setShadowCascades(std::uint32_t count);
@@ -231,6 +235,8 @@ public:
     std::map<std::string, double> memoryPerCharacter() const;
 
 private:
+    // The impostor casters' compute pass, made on first use; null without impostors or when switched off.
+    render::ImpostorShadowRaster* impostorShadowRaster();
     enum class Stage { Idle, Computed, Shadowed };
     void checkSlot(const char* call, std::uint32_t slot) const;
     void checkStage(const char* call, std::uint32_t slot, Stage needed) const;
@@ -283,6 +289,10 @@ private:
     render::ShadowRasterPath shadowRasterPath_;
     std::uint32_t shadowCascades_ = render::kDefaultShadowCascades;
     std::unique_ptr<render::ShadowRaster> shadowRaster_;  // made when the compute path is first asked for
+    // The impostor casters beside the mesh casters in compute (made when first needed; after
+    // shadowRaster_, whose depth buffer it writes, so destroyed before it).
+    std::unique_ptr<render::ImpostorShadowRaster> impostorShadowRaster_;
+    bool impostorShadowsInCompute_ = true;
     bool impostorBlend_;
     bool farCrowd_;
     bool ground_;  // recordCharacters draws the ground behind the opaque characters

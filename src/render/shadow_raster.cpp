@@ -19,28 +19,10 @@ namespace render {
 namespace {
 
 struct RasterPush {
-    glm::vec4 light[3];
-    glm::vec4 toTexels[kMostShadowCascades];
+    ShadowRasterLight light;
     glm::uvec4 sizes;
 };
 static_assert(sizeof(RasterPush) == 128, "the least push-constant space Vulkan guarantees");
-
-// The push constants for the cascades: the first cascade's transform (rows x, y, depth) and each
-// cascade's texels from the first's clip x, y (render/shadow_cascades.h: ShadowCascades::fromFirst and
-// the square: texel = ((clip * k + o) * side + 2 corner + side) * size / 2).
-RasterPush pushFor(const ShadowCascades& cascades, std::uint32_t size, std::uint32_t groupsPerRow, std::uint32_t firstDraw) {
-    RasterPush push{};
-    const glm::mat4& m = cascades.clip[0];
-    for (int row = 0; row < 3; ++row) push.light[row] = glm::vec4(m[0][row], m[1][row], m[2][row], m[3][row]);
-    const float half = 0.5f * static_cast<float>(size);
-    for (std::uint32_t c = 0; c < cascades.count; ++c) {
-        const glm::vec4 f = cascades.fromFirst[c], s = cascades.square[c];
-        push.toTexels[c] = glm::vec4(glm::vec2(f) * s.z * half,
-                                     (glm::vec2(f.z, f.w) * s.z + 2.0f * glm::vec2(s) + s.z) * half);
-    }
-    push.sizes = glm::uvec4(size, groupsPerRow, firstDraw, cascades.count);
-    return push;
-}
 
 constexpr std::uint32_t kMostGroupsPerRow = 65535;  // the least maxComputeWorkGroupCount[0] Vulkan allows
 constexpr std::uint32_t kFarDepthBits = 0x3F800000u;  // 1.0f: the cleared map
@@ -58,6 +40,20 @@ std::uint64_t texelsOf(std::uint32_t size) { return std::uint64_t{size} * size; 
 std::uint64_t packedWordsOf(std::uint32_t size) { return (texelsOf(size) + 1) / 2; }
 
 }  // namespace
+
+// texel = ((clip * k + o) * side + 2 corner + side) * size / 2 (render/shadow_cascades.h: ShadowCascades::
+// fromFirst and the square).
+ShadowRasterLight shadowRasterLight(const ShadowCascades& cascades, std::uint32_t mapSize) {
+    ShadowRasterLight l{};
+    const glm::mat4& m = cascades.clip[0];
+    for (int row = 0; row < 3; ++row) l.light[row] = glm::vec4(m[0][row], m[1][row], m[2][row], m[3][row]);
+    const float half = 0.5f * static_cast<float>(mapSize);
+    for (std::uint32_t c = 0; c < cascades.count; ++c) {
+        const glm::vec4 f = cascades.fromFirst[c], s = cascades.square[c];
+        l.toTexels[c] = glm::vec4(glm::vec2(f) * s.z * half, (glm::vec2(f.z, f.w) * s.z + 2.0f * glm::vec2(s) + s.z) * half);
+    }
+    return l;
+}
 
 ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const DrawLists& lists,
                            const ShadowMap& map)
@@ -144,13 +140,12 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     const VkDescriptorSet set = rasterSet_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, rasterLayout_, 0, 1, &set, 0, nullptr);
     // One dispatch, the cascade its z (shadow_raster.comp.glsl says why).
-    const RasterPush push = pushFor(cascades, size_, perRow, lists_.drawCapacity());
+    const RasterPush push{shadowRasterLight(cascades, size_), glm::uvec4(size_, perRow, lists_.drawCapacity(), cascades.count)};
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, cascades.count);
-    recordPack(cmd);
 }
 
-void ShadowRaster::recordPack(VkCommandBuffer cmd) {
+void ShadowRaster::pack(VkCommandBuffer cmd) {
     // The depths are final; the previous frame's copy into the map read the packed texels.
     gpu::bufferBarrier(cmd, depth_.buffer, kComputeReadWrite, kComputeRead);
     gpu::bufferBarrier(cmd, packed_.buffer, kCopyRead, kComputeWrite);

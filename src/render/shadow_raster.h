@@ -16,6 +16,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/descriptor_bundle.h"
+#include "render/shadow_cascades.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -29,8 +30,16 @@ class GeometryPool;
 enum class ShadowRasterPath { Hardware, Compute };
 
 class ShadowMap;
-struct ShadowCascades;
 struct SkinnedVertices;
+
+// The light as the compute rasterizers take it: the first cascade's transform (rows x, y and depth:
+// clip = row . (p, 1)) and each cascade's texels from the first's clip x, y (xy scale, zw offset; the
+// cascades share the light's view and depth and differ in extents only).
+struct ShadowRasterLight {
+    glm::vec4 light[3];
+    glm::vec4 toTexels[kMostShadowCascades];
+};
+ShadowRasterLight shadowRasterLight(const ShadowCascades& cascades, std::uint32_t mapSize);
 
 class ShadowRaster {
 public:
@@ -45,8 +54,13 @@ public:
     // Outside any rendering pass, after the frame's skinning and lists: clears the depth buffer and
     // rasterizes the shadow pass's mesh casters into it, each into the squares of the cascades it
     // reaches (render/shadow_cascades.h). Rebinds the vertices when their buffer changed (a method
-    // switch, made with the device idle).
+    // switch, made with the device idle). Other casters may be added (render/impostor_shadow_raster.h),
+    // then pack.
     void rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades);
+    // After rasterize (and any other casters): the depths as the map's texels, for mapTexels.
+    void pack(VkCommandBuffer cmd);
+    // The float depths' buffer (one word a texel, row-major), for other casters' atomic mins.
+    VkBuffer depthBits() const { return depth_.buffer; }
     // The skinned vertices' buffer is going away (a method switch): bind the next one afresh.
     void forgetVertices() { boundVertices_ = VK_NULL_HANDLE; }
     // The rasterized depth in the map's texel format (kShadowFormat, row-major), ready for
@@ -58,7 +72,6 @@ public:
 
 private:
     void bindVertices(const SkinnedVertices& vertices);
-    void recordPack(VkCommandBuffer cmd);
     void release();
 
     const gpu::VulkanContext& context_;

@@ -42,7 +42,7 @@ usage: crowd-bench [options]
   --cull gpu|cpu|off   override culling (Table 1: off, as in the paper)
   --shadows on|off     the sun's shadow map (default on; Table 1 too)
   --shadow-lod on|off  casters' level in the shadow map from their size there (default on)
-  --shadow-raster hardware|compute  the shadow map's mesh casters by the graphics pipeline or in compute
+  --shadow-raster hardware|compute  the shadow map's casters by the graphics pipeline or in compute
                        (default compute)
   --shadow-cascades N  the shadow map's cascades, 1 to 4, split by distance (default 1)
   --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)

@@ -51,8 +51,9 @@ usage: crowd-render [options]
                           (texels, the --lod-thresholds values), never finer than in view, and not at
                           all under 2 texels; off: at their level in view (default on)
   --shadow-raster hardware|compute
-                          the shadow map's mesh casters drawn by the graphics pipeline or rasterized
-                          in compute (methods with skinned vertices in a buffer; default compute)
+                          the shadow map's casters (meshes and impostors) drawn by the graphics
+                          pipeline or rasterized in compute (methods with skinned vertices in a buffer;
+                          default compute)
   --shadow-cascades N     the shadow map's cascades, 1 to 4, split by distance: near shadows get finer
                           texels, far ones coarser, for a cost; 1: one map over the whole view (default 1)
   --aa off|msaa2|msaa4|msaa8

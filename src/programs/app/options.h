@@ -30,7 +30,7 @@ struct CullOptions {
     bool impostors = false;
     float impostorThreshold = 32.0f;
     bool shadowLod = true;  // casters' level in the shadow map from their size there (crowdgpu::RendererSettings)
-    crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Compute;  // how the map's mesh casters are drawn
+    crowdgpu::ShadowRaster shadowRaster = crowdgpu::ShadowRaster::Compute;  // how the map's casters are drawn
     std::uint32_t shadowCascades = crowdgpu::RendererSettings{}.shadowCascades;  // the map's cascades, 1 to 4
     bool lodFade = true;        // level changes fade across the hysteresis band (crowdgpu::RendererSettings)
     bool impostorBlend = true;  // impostors blend up to eight atlas cells, or show the nearest (crowdgpu::RendererSettings)
