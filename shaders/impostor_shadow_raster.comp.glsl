@@ -39,19 +39,7 @@ layout(std430, set = 0, binding = 4) buffer Depth { uint depth[]; };  // the map
 layout(std430, set = 0, binding = 5) readonly buffer Params { ImpostorShadowFrame frame; };
 layout(set = 1, binding = 0) uniform sampler2DArray atlasAlbedo;
 #include "impostor_prop_set.glsl.inc"
-
-// As the mesh casters' pass: the hardware pipeline's bias, 1.0 x one step of the 16-bit map + 1.5 x the slope.
-const float kResolvable = 1.0 / 65536.0;
-const float kBiasSlope = 1.5;
-
-// Cascade c's square of the map (shadow_raster.comp.glsl's squareOf).
-ivec4 squareOf(uint c) {
-    const uint size = frame.sizes.x;
-    if (frame.sizes.z == 1u) return ivec4(0, 0, int(size) - 1, int(size) - 1);
-    const int side = int(size / 2u);
-    const ivec2 first = ivec2(int(c & 1u), int(c >> 1u)) * side;
-    return ivec4(first, first + side - 1);
-}
+#include "shadow_caster_rules.glsl.inc"
 
 // A world point in cascade c's texels (xy) and the map's depth (z); a world vector the same way.
 vec3 toMap(vec3 p, uint c) {
@@ -69,7 +57,7 @@ void writeDepth(ivec2 texel, float z) {
 
 void main() {
     const uint c = gl_WorkGroupID.z;
-    const ivec4 square = squareOf(c);
+    const ivec4 square = shadowCascadeSquare(c, frame.sizes.x, frame.sizes.z);
     const bool blend = frame.sizes.w != 0u;
     for (uint i = gl_WorkGroupID.x; i < impostorFrame.shadowCount; i += gl_NumWorkGroups.x) {
         const CharacterRecord character = characters[impostors[frame.sizes.y + i]];
@@ -88,7 +76,7 @@ void main() {
         fetchDx = vec2(0.5 * cxStep.x, -0.5 * cyStep.x) / float(q.grid.x);
         fetchDy = vec2(0.5 * cxStep.y, -0.5 * cyStep.y) / float(q.grid.x);
         const vec2 zStep = r.z * cxStep + u.z * cyStep;
-        const float bias = kResolvable + kBiasSlope * max(abs(zStep.x), abs(zStep.y));
+        const float bias = shadowCasterBias(zStep);
         const uint width = uint(last.x - first.x + 1);
         const uint texels = width * uint(last.y - first.y + 1);
         for (uint t = gl_LocalInvocationID.x; t < texels; t += gl_WorkGroupSize.x) {

@@ -19,6 +19,7 @@
 // here; shadow_pack.comp.glsl rounds them to the map's 16 bits as the hardware rounds its fragments'.
 #include "gpu_types.h"
 #include "triangle_coverage.glsl.inc"
+#include "shadow_caster_rules.glsl.inc"
 
 layout(local_size_x = 64) in;
 
@@ -38,9 +39,6 @@ layout(push_constant) uniform Push {
                        // pass's commands start in `draws` (DrawLists::drawCapacity), w: cascades
 } push;
 
-const float kBiasConstant = 1.0;     // as the hardware pass's pipeline (render/character_draw.cpp)
-const float kBiasSlope = 1.5;
-
 // Where a skinned vertex falls in cascade c's square of the map: x, y in texels (snapped), z the depth.
 vec3 toMap(uint vertex, uint c) {
     const vec4 p = vec4(positions[vertex].xyz, 1.0);
@@ -49,20 +47,8 @@ vec3 toMap(uint vertex, uint c) {
     return vec3(round(texel * kSubPixel) / kSubPixel, clip.z);
 }
 
-// The minimum resolvable difference of the map's D16_UNORM depth (Vulkan's r for a fixed-point
-// attachment: constant, one step of its 16 bits), for the constant bias the hardware pass applies.
-const float kResolvable = 1.0 / 65536.0;
-
 void writeDepth(ivec2 texel, float z) {
     atomicMin(depth[uint(texel.y) * push.sizes.x + uint(texel.x)], floatBitsToUint(clamp(z, 0.0, 1.0)));
-}
-
-// Cascade c's square of the map: the whole map for one cascade, else a quarter.
-ivec4 squareOf(uint c) {
-    if (push.sizes.w == 1u) return ivec4(0, 0, int(push.sizes.x) - 1, int(push.sizes.x) - 1);
-    const int side = int(push.sizes.x / 2u);
-    const ivec2 first = ivec2(int(c & 1u), int(c >> 1u)) * side;
-    return ivec4(first, first + side - 1);
 }
 
 void rasterize(vec3 p0, vec3 p1, vec3 p2, ivec4 square) {
@@ -77,7 +63,7 @@ void rasterize(vec3 p0, vec3 p1, vec3 p2, ivec4 square) {
     const TriangleCoverage t = triangleCoverageWithin(p0.xy, p1.xy, p2.xy, square.xy, square.zw);
     if (any(greaterThan(t.first, t.last))) return;
     const vec2 slopes = triangleDepthSlopes(p0, p1, p2, area);
-    const float bias = kBiasConstant * kResolvable + kBiasSlope * max(abs(slopes.x), abs(slopes.y));
+    const float bias = shadowCasterBias(slopes);
     for (int y = t.first.y; y <= t.last.y; ++y) {
         for (int x = t.first.x; x <= t.last.x; ++x) {
             if (!triangleCovers(t, x, y)) continue;
@@ -94,7 +80,7 @@ void main() {
     if (draw >= totals.shadowDrawCount) return;
     const DrawIndexedCommand command = draws[push.sizes.z + draw];
     if (command.instanceCount == 0u || (shadowStates[command.firstInstance] & (1u << (SHADOW_CASCADE_SHIFT + c))) == 0u) return;
-    const ivec4 square = squareOf(c);
+    const ivec4 square = shadowCascadeSquare(c, push.sizes.x, push.sizes.w);
     const uint triangles = command.indexCount / 3u;
     for (uint t = gl_LocalInvocationID.x; t < triangles; t += gl_WorkGroupSize.x) {
         const uint first = command.firstIndex + 3u * t;
