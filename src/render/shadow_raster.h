@@ -3,9 +3,10 @@
 // "the raster wall": on the H100 the hardware rasterizer is a small graphics slice, compute is every
 // SM). A depth-only map needs no more than a 32-bit atomic min per texel: the casters' triangles go to
 // a buffer of depth bits (shaders/shadow_raster.comp.glsl), packed to the map's 16-bit texels
-// (shaders/shadow_pack.comp.glsl) and copied into the shadow map's depth image, where the impostor
-// casters are drawn over it as before. The map is
-// the hardware pass's texel for texel but for rounding on triangle edges (tests/test_shadow_raster.cpp).
+// (shaders/shadow_pack.comp.glsl) and copied into the shadow map's depth image. The impostor casters
+// go into the same depth buffer before the pack (render/impostor_shadow_raster.h), or, with that pass
+// switched off, are drawn over the copied map by the graphics pipeline. The map is the hardware pass's
+// texel for texel but for rounding on triangle edges (tests/test_shadow_raster.cpp).
 // Only for methods whose skinned vertices are in a buffer (not the `vs` baseline, which skins while
 // it draws), and only when that buffer's position stream fits one storage binding.
 #include <cstdint>
