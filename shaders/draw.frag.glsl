@@ -17,8 +17,8 @@ layout(location = 0) out vec4 outColor;
 layout(constant_id = 0) const uint kFadeSide = 0u;
 
 void main() {
-    vec3 albedo = vAlbedo * sampleBaseColor(vTextureSlot, vUv);
+    vec3 albedo = drawAlbedo(vMaterial) * sampleBaseColor(drawTextureSlot(vMaterial), vUv);
     // After the texture read, which needs its neighbours' coordinates for derivatives.
-    if (kFadeSide != 0u && !fadeDraws(gl_FragCoord.xy, vFadeShare, kFadeSide == 2u)) discard;
+    if (kFadeSide != 0u && !fadeDraws(gl_FragCoord.xy, drawFadeShare(vMaterial), kFadeSide == 2u)) discard;
     outColor = vec4(shade(scene, vNormal, albedo, vWorld, cameraPosition.xyz), 1.0);
 }

@@ -20,10 +20,9 @@ void main() {
     uint material = uint(inNormal.w);
     gl_Position = scene.viewProjection * vec4(inPosition.xyz, 1.0);
     vNormal = inNormal.xyz;
-    vAlbedo = characterColor(scene, material, character.tint.rgb);
     // Minus the draw's vertexOffset, the vertex index is the model's own.
     vUv = textureCoordinates[model.info.x + uint(gl_VertexIndex - gl_BaseVertexARB)];
-    vTextureSlot = textureSlot(scene, material, model);
     vWorld = inPosition.xyz;
-    vFadeShare = fadeShareOf(characterStates[gl_InstanceIndex]);
+    vMaterial = drawMaterial(characterColor(scene, material, character.tint.rgb), textureSlot(scene, material, model),
+                             characterStates[gl_InstanceIndex] >> FADE_SHIFT);
 }
