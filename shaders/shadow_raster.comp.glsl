@@ -11,6 +11,15 @@
 // (render/shadow_cascades.h). One dispatch for all: on the H100 a dispatch a cascade, each waiting for
 // the last, put four slowest workgroups end to end (paper-fig4's shadow pass 0.35 -> 1.58 ms).
 //
+// Large triangles are shared out: a thread that walks its triangle's texels alone is fine for a crowd,
+// whose triangles cover a few texels each, but a map fitted to a few characters makes their triangles
+// thousands of texels wide, and one thread walking them held the frame (the H100, 16 soldiers: a 4.8 ms
+// shadow pass). So a triangle whose box holds more than kSmallTexels centres is listed instead, one
+// record for each kChunk x kChunk block of its box, and a second dispatch of this shader (kChunkPass)
+// draws each block with a whole workgroup, a texel a thread. Both draw a texel by the same rules from
+// the same triangle, so the map is the same texel for texel whichever draws it. When the list is full
+// the thread draws its triangle itself.
+//
 // Rules kept from the hardware pass, so the two maps agree texel for texel but for edge rounding:
 // samples at texel centres; vertices snapped to 1/256 texel (the rasterizer's sub-pixel grid); the
 // top-left rule on texel centres that lie on an edge; both faces; depth interpolated in the
@@ -29,6 +38,14 @@ layout(std430, set = 0, binding = 2) readonly buffer Indices { uint indices[]; }
 layout(std430, set = 0, binding = 3) readonly buffer Positions { vec4 positions[]; };  // skinned, world space
 layout(std430, set = 0, binding = 4) buffer Depth { uint depth[]; };  // the map, row-major, float bits (then packed)
 layout(std430, set = 0, binding = 5) readonly buffer ShadowStates { uint shadowStates[]; };  // per character
+// The large triangles' blocks (cleared to a count of 0 each frame): x the shadow draw, y the triangle
+// within it, z the cascade, w the block within the triangle's box (x | y << 16, in kChunk texels).
+layout(std430, set = 0, binding = 6) buffer Chunks { uint chunkCount; uint chunkPad[3]; uvec4 chunks[]; };
+
+// 0: one workgroup a caster draw, listing its large triangles' blocks; 1: one workgroup a block.
+layout(constant_id = 0) const uint kChunkPass = 0u;
+const int kSmallTexels = 64;  // a box of more texel centres than this is shared out
+const int kChunk = 32;        // texels a side of a large triangle's block
 
 layout(push_constant) uniform Push {
     vec4 light[3];     // the first cascade's transform, rows x, y and depth: clip = row . (p, 1)
@@ -51,41 +68,90 @@ void writeDepth(ivec2 texel, float z) {
     atomicMin(depth[uint(texel.y) * push.sizes.x + uint(texel.x)], floatBitsToUint(clamp(z, 0.0, 1.0)));
 }
 
-void rasterize(vec3 p0, vec3 p1, vec3 p2, ivec4 square) {
+// A triangle of the map ready to draw: its coverage (empty: first > last), the depth's plane and bias.
+struct MapTriangle {
+    TriangleCoverage coverage;
+    vec3 p0;
+    vec2 slopes;
+    float bias;
+};
+
+MapTriangle mapTriangle(vec3 p0, vec3 p1, vec3 p2, ivec4 square) {
+    MapTriangle m;
     // Orient so the inside is positive (both faces cast).
     float area = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
-    if (area == 0.0) return;
     if (area < 0.0) {
         const vec3 t = p1;
         p1 = p2, p2 = t;
         area = -area;
     }
-    const TriangleCoverage t = triangleCoverageWithin(p0.xy, p1.xy, p2.xy, square.xy, square.zw);
-    if (any(greaterThan(t.first, t.last))) return;
-    const vec2 slopes = triangleDepthSlopes(p0, p1, p2, area);
-    const float bias = shadowCasterBias(slopes);
-    for (int y = t.first.y; y <= t.last.y; ++y) {
-        for (int x = t.first.x; x <= t.last.x; ++x) {
-            if (!triangleCovers(t, x, y)) continue;
-            const float z = p0.z + slopes.x * (float(x) + 0.5 - p0.x) + slopes.y * (float(y) + 0.5 - p0.y);
-            if (z < 0.0 || z > 1.0) continue;  // clipped by the near and far planes, as the hardware clips
-            writeDepth(ivec2(x, y), z + bias);
-        }
-    }
+    m.coverage = triangleCoverageWithin(p0.xy, p1.xy, p2.xy, square.xy, square.zw);
+    if (area == 0.0) m.coverage.last = m.coverage.first - 1;  // no inside: nothing to draw
+    m.p0 = p0;
+    m.slopes = area == 0.0 ? vec2(0.0) : triangleDepthSlopes(p0, p1, p2, area);
+    m.bias = shadowCasterBias(m.slopes);
+    return m;
 }
 
-void main() {
+void drawTexel(MapTriangle m, int x, int y) {
+    if (!triangleCovers(m.coverage, x, y)) return;
+    const float z = m.p0.z + m.slopes.x * (float(x) + 0.5 - m.p0.x) + m.slopes.y * (float(y) + 0.5 - m.p0.y);
+    if (z < 0.0 || z > 1.0) return;  // clipped by the near and far planes, as the hardware clips
+    writeDepth(ivec2(x, y), z + m.bias);
+}
+
+// Triangle t of the shadow draw `draw` (its command `command`) in cascade c's square.
+MapTriangle drawTriangle(DrawIndexedCommand command, uint t, uint c) {
+    const uint first = command.firstIndex + 3u * t;
+    return mapTriangle(toMap(uint(int(indices[first]) + command.vertexOffset), c),
+                       toMap(uint(int(indices[first + 1u]) + command.vertexOffset), c),
+                       toMap(uint(int(indices[first + 2u]) + command.vertexOffset), c), shadowCascadeSquare(c, push.sizes.x, push.sizes.w));
+}
+
+// Lists a large triangle's blocks for the second dispatch; false when the list has no room for them.
+bool listChunks(MapTriangle m, uint draw, uint t, uint c) {
+    const ivec2 blocks = (m.coverage.last - m.coverage.first + kChunk) / kChunk;
+    const uint count = uint(blocks.x * blocks.y);
+    const uint at = atomicAdd(chunkCount, count);
+    if (at + count > uint(chunks.length())) return false;
+    for (uint i = 0u; i < count; ++i)
+        chunks[at + i] = uvec4(draw, t, c, (i % uint(blocks.x)) | ((i / uint(blocks.x)) << 16));
+    return true;
+}
+
+void drawCasters() {
     const uint draw = gl_WorkGroupID.y * push.sizes.y + gl_WorkGroupID.x;
     const uint c = gl_WorkGroupID.z;
     if (draw >= totals.shadowDrawCount) return;
     const DrawIndexedCommand command = draws[push.sizes.z + draw];
     if (command.instanceCount == 0u || (shadowStates[command.firstInstance] & (1u << (SHADOW_CASCADE_SHIFT + c))) == 0u) return;
-    const ivec4 square = shadowCascadeSquare(c, push.sizes.x, push.sizes.w);
     const uint triangles = command.indexCount / 3u;
     for (uint t = gl_LocalInvocationID.x; t < triangles; t += gl_WorkGroupSize.x) {
-        const uint first = command.firstIndex + 3u * t;
-        rasterize(toMap(uint(int(indices[first]) + command.vertexOffset), c),
-                  toMap(uint(int(indices[first + 1u]) + command.vertexOffset), c),
-                  toMap(uint(int(indices[first + 2u]) + command.vertexOffset), c), square);
+        const MapTriangle m = drawTriangle(command, t, c);
+        const ivec2 box = m.coverage.last - m.coverage.first + 1;
+        if (any(lessThanEqual(box, ivec2(0)))) continue;
+        if (box.x * box.y > kSmallTexels && listChunks(m, draw, t, c)) continue;
+        for (int y = m.coverage.first.y; y <= m.coverage.last.y; ++y)
+            for (int x = m.coverage.first.x; x <= m.coverage.last.x; ++x) drawTexel(m, x, y);
     }
+}
+
+// A fixed grid of workgroups takes the listed blocks in turn, its threads over a block's texels.
+void drawChunks() {
+    const uint listed = min(chunkCount, uint(chunks.length()));
+    for (uint i = gl_WorkGroupID.x; i < listed; i += gl_NumWorkGroups.x) {
+        const uvec4 chunk = chunks[i];
+        const MapTriangle m = drawTriangle(draws[push.sizes.z + chunk.x], chunk.y, chunk.z);
+        const ivec2 first = m.coverage.first + ivec2(chunk.w & 0xffffu, chunk.w >> 16) * kChunk;
+        const ivec2 size = min(m.coverage.last - first + 1, ivec2(kChunk));
+        for (int k = int(gl_LocalInvocationID.x); k < size.x * size.y; k += int(gl_WorkGroupSize.x))
+            drawTexel(m, first.x + k % size.x, first.y + k / size.x);
+    }
+}
+
+void main() {
+    if (kChunkPass == 0u)
+        drawCasters();
+    else
+        drawChunks();
 }

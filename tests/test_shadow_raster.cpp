@@ -135,6 +135,41 @@ TEST_F(GpuTest, ComputeShadowMapEqualsTheHardwareOne) {
     }
 }
 
+// A map fitted to two soldiers seen close makes their triangles tens to hundreds of texels across: the
+// compute pass lists such triangles' 32 x 32 blocks and draws each with a whole workgroup instead of
+// one thread walking the triangle (shadow_raster.comp.glsl; on the H100 that walk made 16 soldiers'
+// shadow pass 4.8 ms). The map must still be the hardware one's, with the first test's bounds (measured
+// on lavapipe: coverage identical, depths over 1e-4 apart on 0.0 % of covered texels), and the blocks' path
+// must have run. Blocks placed with their x and y swapped fail it (coverage differs on 3.4 % of texels).
+TEST_F(GpuTest, LargeCasterTrianglesKeepTheHardwareMap) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    app::SceneOptions scene;
+    scene.count = 2;
+    crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
+    test::RendererOptions options;
+    options.size = {320, 180};
+    options.method = skin::Method::Compute;
+    options.shadowMapSize = 1024;
+    test::TestRenderer renderer(*device, crowd, options);
+    const app::CrowdShape shape = test::shapeOf(crowd);
+    renderer.camera.target = shape.center + glm::vec3(0.0f, 1.0f, 0.0f);
+    renderer.camera.eye = shape.center + glm::vec3(0.0f, 2.0f, shape.radius + 3.0f);
+    const ShadowFrame hardware = renderWith(renderer, *context, render::ShadowRasterPath::Hardware, 0.7);
+    const ShadowFrame compute = renderWith(renderer, *context, render::ShadowRasterPath::Compute, 0.7);
+    ASSERT_TRUE(renderer.recorder().rastersShadowsInCompute());
+    const std::uint32_t blocks = test::readAll<std::uint32_t>(*context, renderer.recorder().computeShadowRaster()->largeTriangleBlocks())[0];
+    const MapComparison maps = compareMaps(hardware.map, compute.map, 1e-4f);
+    const double covered = static_cast<double>(maps.covered);
+    std::printf("%u blocks of large triangles; %zu texels covered, coverage differs on %zu (%.3f %%), depth on %zu (%.3f %%)\n",
+                blocks, maps.covered, maps.coverageDiffers, 100.0 * maps.coverageDiffers / covered, maps.depthDiffers,
+                100.0 * maps.depthDiffers / covered);
+    EXPECT_GT(blocks, 100u) << "large triangles were shared out";
+    EXPECT_GT(maps.covered, 20000u) << "the casters cover the map";
+    EXPECT_LT(maps.coverageDiffers, 0.005 * covered);
+    EXPECT_LT(maps.depthDiffers, 0.005 * covered);
+    EXPECT_GT(test::fractionOfMatchingPixels(hardware.picture, compute.picture, 2), 0.998);
+}
+
 // The impostor-level casters rasterized in compute (render/impostor_shadow_raster.h) against the same
 // casters drawn by the graphics pipeline over the copied map (the path before it), every character an
 // impostor: 100 soldiers seen low over their edge with a small map (casters 15 to 40 texels across), the

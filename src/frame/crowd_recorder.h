@@ -174,6 +174,8 @@ public:
     bool shadows() const { return shadows_; }
     void setShadowRaster(render::ShadowRasterPath path);
     render::ShadowRasterPath shadowRaster() const { return shadowRasterPath_; }
+    // The compute rasterizer of the mesh casters; null until the compute path was first taken.
+    const render::ShadowRaster* computeShadowRaster() const { return shadowRaster_.get(); }
     // Whether this frame's mesh casters go through the compute rasterizer (the path asks for it and the
     // method's skinned vertices can be read by it).
     bool rastersShadowsInCompute() const;

@@ -34,8 +34,20 @@ constexpr gpu::Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_A
 constexpr gpu::Access kCopyRead{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
 
 constexpr std::uint32_t kPackGroupSize = 256;  // shadow_pack.comp.glsl's local_size_x
+// The large triangles' blocks (shadow_raster.comp.glsl): a 16-byte count, then 16 bytes a block. Room for
+// a block of 32 x 32 texels for every 256 texels of the map: the whole map four deep, more than a close
+// view of a few characters lists (a full list only sends the rest back to the slower walk per thread).
+constexpr std::uint64_t kChunkHeaderBytes = 16;
+constexpr std::uint64_t kChunkBytes = 16;
+constexpr std::uint64_t kTexelsPerChunkRecord = 256;
+// Workgroups of the blocks' dispatch: enough to fill a large GPU, few enough to cost nothing when no
+// block is listed (the crowd's usual frame).
+constexpr std::uint32_t kChunkGroups = 1024;
 
 std::uint64_t texelsOf(std::uint32_t size) { return std::uint64_t{size} * size; }
+std::uint64_t chunkBytesOf(std::uint32_t size) {
+    return kChunkHeaderBytes + std::max<std::uint64_t>(texelsOf(size) / kTexelsPerChunkRecord, 64) * kChunkBytes;
+}
 // Two 16-bit texels a word, the last word half used when the count is odd.
 std::uint64_t packedWordsOf(std::uint32_t size) { return (texelsOf(size) + 1) / 2; }
 
@@ -63,6 +75,10 @@ ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool
                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                gpu::MemoryUse::DeviceLocal, "shadow map depth (compute raster)");
     try {
+        chunks_ = gpu::createBuffer(context, chunkBytesOf(size_),
+                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                    gpu::MemoryUse::DeviceLocal, "shadow map large triangles' blocks (compute raster)");
         packed_ = gpu::createBuffer(context, packedWordsOf(size_) * 4,
                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                     gpu::MemoryUse::DeviceLocal, "shadow map texels (compute raster, packed)");
@@ -79,14 +95,18 @@ ShadowRaster::ShadowRaster(const gpu::VulkanContext& context, const GeometryPool
     }
 }
 
-std::uint64_t ShadowRaster::bytesFor(std::uint32_t size) { return texelsOf(size) * 4 + packedWordsOf(size) * 4; }
+std::uint64_t ShadowRaster::bytesFor(std::uint32_t size) {
+    return texelsOf(size) * 4 + packedWordsOf(size) * 4 + chunkBytesOf(size);
+}
 
 ShadowRaster::~ShadowRaster() { release(); }
 
 void ShadowRaster::release() {
     if (rasterPipeline_) vkDestroyPipeline(context_.device, rasterPipeline_, nullptr);
+    if (chunkPipeline_) vkDestroyPipeline(context_.device, chunkPipeline_, nullptr);
     if (rasterLayout_) vkDestroyPipelineLayout(context_.device, rasterLayout_, nullptr);
     rasterPipeline_ = VK_NULL_HANDLE;
+    chunkPipeline_ = VK_NULL_HANDLE;
     rasterLayout_ = VK_NULL_HANDLE;
     rasterSet_.reset();
     if (packPipeline_) vkDestroyPipeline(context_.device, packPipeline_, nullptr);
@@ -95,6 +115,7 @@ void ShadowRaster::release() {
     packLayout_ = VK_NULL_HANDLE;
     packSet_.reset();
     gpu::destroyBuffer(context_, packed_);
+    gpu::destroyBuffer(context_, chunks_);
     gpu::destroyBuffer(context_, depth_);
 }
 
@@ -111,25 +132,32 @@ void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
                                            {storage, pool_.indices().buffer},
                                            {storage, vertices.buffer->buffer, 0, vertices.normalsOffset},
                                            {storage, depth_.buffer},
-                                           {storage, lists_.shadowStates().buffer}};
+                                           {storage, lists_.shadowStates().buffer},
+                                           {storage, chunks_.buffer}};
     rasterSet_ = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
     if (!rasterPipeline_) {
         // Every later set has the same definition, so the layout made with the first one stays valid.
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(RasterPush)};
         const VkDescriptorSetLayout sets[] = {rasterSet_->layout()};
         rasterLayout_ = gpu::createPipelineLayout(context_, sets, {&push, 1});
-        rasterPipeline_ = gpu::createComputePipeline(context_, shadow_raster_comp_spv, rasterLayout_, {});
+        const std::uint32_t casters[] = {0}, chunks[] = {1};  // kChunkPass
+        rasterPipeline_ = gpu::createComputePipeline(context_, shadow_raster_comp_spv, rasterLayout_, casters);
+        chunkPipeline_ = gpu::createComputePipeline(context_, shadow_raster_comp_spv, rasterLayout_, chunks);
     }
     boundVertices_ = vertices.buffer->buffer;
 }
 
 void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades) {
     bindVertices(vertices);
-    // The previous frame's pack read the depths: done before they are cleared.
-    gpu::bufferBarrier(cmd, depth_.buffer, kComputeRead, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    // The previous frame's pack read the depths, and its blocks' dispatch the list: done before both
+    // are cleared.
+    constexpr gpu::Access kClear{VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    gpu::bufferBarrier(cmd, depth_.buffer, kComputeRead, kClear);
+    gpu::bufferBarrier(cmd, chunks_.buffer, kComputeReadWrite, kClear);
     vkCmdFillBuffer(cmd, depth_.buffer, 0, VK_WHOLE_SIZE, kFarDepthBits);
-    gpu::bufferBarrier(cmd, depth_.buffer, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                       kComputeReadWrite);
+    vkCmdFillBuffer(cmd, chunks_.buffer, 0, kChunkHeaderBytes, 0);
+    gpu::bufferBarrier(cmd, depth_.buffer, kClear, kComputeReadWrite);
+    gpu::bufferBarrier(cmd, chunks_.buffer, kClear, kComputeReadWrite);
     // The skinned vertices (a compute pass's or a copy's) and the lists (culling's) were written
     // for the graphics passes; this pass reads them as storage.
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT},
@@ -143,6 +171,10 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     const RasterPush push{shadowRasterLight(cascades, size_), glm::uvec4(size_, perRow, lists_.drawCapacity(), cascades.count)};
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, cascades.count);
+    // The large triangles' blocks, listed by the dispatch above, each drawn by a workgroup.
+    gpu::bufferBarrier(cmd, chunks_.buffer, kComputeReadWrite, kComputeReadWrite);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, chunkPipeline_);
+    vkCmdDispatch(cmd, kChunkGroups, 1, 1);
 }
 
 void ShadowRaster::pack(VkCommandBuffer cmd) {
