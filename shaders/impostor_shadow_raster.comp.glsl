@@ -59,7 +59,14 @@ void main() {
     const uint c = gl_WorkGroupID.z;
     const ivec4 square = shadowCascadeSquare(c, frame.sizes.x, frame.sizes.z);
     const bool blend = frame.sizes.w != 0u;
-    for (uint i = gl_WorkGroupID.x; i < impostorFrame.shadowCount; i += gl_NumWorkGroups.x) {
+    // Fewer casters than workgroups (a small group far off, the map fitted to it: each quad may cover
+    // hundreds of thousands of texels) share each caster among `share` workgroups, each taking every
+    // share-th run of 64 texels; on the H100 one workgroup a caster left 16 casters' pass 10 ms long
+    // on 16 SMs. With as many casters as workgroups or more, a workgroup takes whole casters in turn.
+    const uint casters = impostorFrame.shadowCount;
+    const uint share = casters >= gl_NumWorkGroups.x ? 1u : gl_NumWorkGroups.x / max(casters, 1u);
+    const uint slice = gl_WorkGroupID.x % share;
+    for (uint i = gl_WorkGroupID.x / share; i < casters; i += gl_NumWorkGroups.x / share) {
         const CharacterRecord character = characters[impostors[frame.sizes.y + i]];
         ImpostorQuad q = impostorQuad(character, impostorModelOf(character), vec3(0.0), true, frame.lightDirection.xyz);
         q.blend = blend ? impostorNearestBand(q.blend) : impostorNearest(q.blend);
@@ -79,7 +86,7 @@ void main() {
         const float bias = shadowCasterBias(zStep);
         const uint width = uint(last.x - first.x + 1);
         const uint texels = width * uint(last.y - first.y + 1);
-        for (uint t = gl_LocalInvocationID.x; t < texels; t += gl_WorkGroupSize.x) {
+        for (uint t = slice * gl_WorkGroupSize.x + gl_LocalInvocationID.x; t < texels; t += share * gl_WorkGroupSize.x) {
             const ivec2 texel = first + ivec2(t % width, t / width);
             const vec2 d = vec2(texel) + 0.5 - centre.xy;
             const vec2 corner = vec2(dot(cxStep, d), dot(cyStep, d));

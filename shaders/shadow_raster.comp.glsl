@@ -14,11 +14,12 @@
 // Large triangles are shared out: a thread that walks its triangle's texels alone is fine for a crowd,
 // whose triangles cover a few texels each, but a map fitted to a few characters makes their triangles
 // thousands of texels wide, and one thread walking them held the frame (the H100, 16 soldiers: a 4.8 ms
-// shadow pass). So a triangle whose box holds more than kSmallTexels centres is listed instead, one
-// record for each kChunk x kChunk block of its box, and a second dispatch of this shader (kChunkPass)
-// draws each block with a whole workgroup, a texel a thread. Both draw a texel by the same rules from
-// the same triangle, so the map is the same texel for texel whichever draws it. When the list is full
-// the thread draws its triangle itself.
+// shadow pass). So a triangle whose box holds more than kSmallTexels centres is listed instead: its box
+// cut into kBlock x kBlock blocks, a record for each run of up to kBlocksPerRecord of them, and a second
+// dispatch of this shader (kChunkPass) draws each record with a whole workgroup, a texel a thread,
+// stepping over the blocks the triangle misses (a long thin triangle's box is mostly empty). Both draw
+// a texel by the same rules from the same triangle, so the map is the same texel for texel whichever
+// draws it. When the list is full the thread draws its triangle itself.
 //
 // Rules kept from the hardware pass, so the two maps agree texel for texel but for edge rounding:
 // samples at texel centres; vertices snapped to 1/256 texel (the rasterizer's sub-pixel grid); the
@@ -38,14 +39,15 @@ layout(std430, set = 0, binding = 2) readonly buffer Indices { uint indices[]; }
 layout(std430, set = 0, binding = 3) readonly buffer Positions { vec4 positions[]; };  // skinned, world space
 layout(std430, set = 0, binding = 4) buffer Depth { uint depth[]; };  // the map, row-major, float bits (then packed)
 layout(std430, set = 0, binding = 5) readonly buffer ShadowStates { uint shadowStates[]; };  // per character
-// The large triangles' blocks (cleared to a count of 0 each frame): x the shadow draw, y the triangle
-// within it, z the cascade, w the block within the triangle's box (x | y << 16, in kChunk texels).
+// The large triangles' records (cleared to a count of 0 each frame): x the shadow draw, y the triangle
+// within it, z the cascade, w the record's first block (blocks numbered row by row over the box).
 layout(std430, set = 0, binding = 6) buffer Chunks { uint chunkCount; uint chunkPad[3]; uvec4 chunks[]; };
 
-// 0: one workgroup a caster draw, listing its large triangles' blocks; 1: one workgroup a block.
+// 0: one workgroup a caster draw, listing its large triangles; 1: one workgroup a record of blocks.
 layout(constant_id = 0) const uint kChunkPass = 0u;
-const int kSmallTexels = 64;  // a box of more texel centres than this is shared out
-const int kChunk = 32;        // texels a side of a large triangle's block
+const int kSmallTexels = 64;        // a box of more texel centres than this is shared out
+const int kBlock = 16;              // texels a side of a block
+const uint kBlocksPerRecord = 64u;  // blocks a record (a workgroup's share: up to 16,384 texels)
 
 layout(push_constant) uniform Push {
     vec4 light[3];     // the first cascade's transform, rows x, y and depth: clip = row . (p, 1)
@@ -108,14 +110,15 @@ MapTriangle drawTriangle(DrawIndexedCommand command, uint t, uint c) {
                        toMap(uint(int(indices[first + 2u]) + command.vertexOffset), c), shadowCascadeSquare(c, push.sizes.x, push.sizes.w));
 }
 
-// Lists a large triangle's blocks for the second dispatch; false when the list has no room for them.
+ivec2 blocksOf(MapTriangle m) { return (m.coverage.last - m.coverage.first + kBlock) / kBlock; }
+
+// Lists a large triangle's records for the second dispatch; false when the list has no room for them.
 bool listChunks(MapTriangle m, uint draw, uint t, uint c) {
-    const ivec2 blocks = (m.coverage.last - m.coverage.first + kChunk) / kChunk;
-    const uint count = uint(blocks.x * blocks.y);
+    const ivec2 blocks = blocksOf(m);
+    const uint count = (uint(blocks.x * blocks.y) + kBlocksPerRecord - 1u) / kBlocksPerRecord;
     const uint at = atomicAdd(chunkCount, count);
     if (at + count > uint(chunks.length())) return false;
-    for (uint i = 0u; i < count; ++i)
-        chunks[at + i] = uvec4(draw, t, c, (i % uint(blocks.x)) | ((i / uint(blocks.x)) << 16));
+    for (uint i = 0u; i < count; ++i) chunks[at + i] = uvec4(draw, t, c, i * kBlocksPerRecord);
     return true;
 }
 
@@ -136,16 +139,38 @@ void drawCasters() {
     }
 }
 
-// A fixed grid of workgroups takes the listed blocks in turn, its threads over a block's texels.
+// Whether the triangle may cover a texel centre between `first` and `last`: false when all four corner
+// centres lie outside one edge by more than a hundredth of a texel (an edge function is linear, so the
+// corners bound it). Only a shortcut: the texels of a block it keeps are each tested exactly.
+bool mayCover(MapTriangle m, ivec2 first, ivec2 last) {
+    const vec2 lo = vec2(first) + 0.5, hi = vec2(last) + 0.5;
+    const vec2 a[3] = vec2[3](m.coverage.p1, m.coverage.p2, m.coverage.p0);
+    const vec2 b[3] = vec2[3](m.coverage.p2, m.coverage.p0, m.coverage.p1);
+    for (int e = 0; e < 3; ++e) {
+        const vec2 d = b[e] - a[e];
+        const vec2 gradient = vec2(-d.y, d.x);  // of the edge function w(s) = d.x (s.y - a.y) - d.y (s.x - a.x)
+        const float best = d.x * ((gradient.y > 0.0 ? hi.y : lo.y) - a[e].y) - d.y * ((gradient.x > 0.0 ? hi.x : lo.x) - a[e].x);
+        if (best < -0.01 * length(d)) return false;
+    }
+    return true;
+}
+
+// A fixed grid of workgroups takes the listed records in turn, its threads over each block's texels.
 void drawChunks() {
     const uint listed = min(chunkCount, uint(chunks.length()));
     for (uint i = gl_WorkGroupID.x; i < listed; i += gl_NumWorkGroups.x) {
         const uvec4 chunk = chunks[i];
         const MapTriangle m = drawTriangle(draws[push.sizes.z + chunk.x], chunk.y, chunk.z);
-        const ivec2 first = m.coverage.first + ivec2(chunk.w & 0xffffu, chunk.w >> 16) * kChunk;
-        const ivec2 size = min(m.coverage.last - first + 1, ivec2(kChunk));
-        for (int k = int(gl_LocalInvocationID.x); k < size.x * size.y; k += int(gl_WorkGroupSize.x))
-            drawTexel(m, first.x + k % size.x, first.y + k / size.x);
+        const ivec2 blocks = blocksOf(m);
+        const uint end = min(chunk.w + kBlocksPerRecord, uint(blocks.x * blocks.y));
+        for (uint block = chunk.w; block < end; ++block) {
+            const ivec2 first = m.coverage.first + ivec2(block % uint(blocks.x), block / uint(blocks.x)) * kBlock;
+            const ivec2 last = min(first + kBlock - 1, m.coverage.last);
+            if (!mayCover(m, first, last)) continue;
+            const ivec2 size = last - first + 1;
+            for (int k = int(gl_LocalInvocationID.x); k < size.x * size.y; k += int(gl_WorkGroupSize.x))
+                drawTexel(m, first.x + k % size.x, first.y + k / size.x);
+        }
     }
 }
 

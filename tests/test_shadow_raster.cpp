@@ -136,11 +136,13 @@ TEST_F(GpuTest, ComputeShadowMapEqualsTheHardwareOne) {
 }
 
 // A map fitted to two soldiers seen close makes their triangles tens to hundreds of texels across: the
-// compute pass lists such triangles' 32 x 32 blocks and draws each with a whole workgroup instead of
-// one thread walking the triangle (shadow_raster.comp.glsl; on the H100 that walk made 16 soldiers'
-// shadow pass 4.8 ms). The map must still be the hardware one's, with the first test's bounds (measured
-// on lavapipe: coverage identical, depths over 1e-4 apart on 0.0 % of covered texels), and the blocks' path
-// must have run. Blocks placed with their x and y swapped fail it (coverage differs on 3.4 % of texels).
+// compute pass lists such triangles (records of up to 64 blocks of 16 x 16 texels of their boxes) and
+// draws each record with a whole workgroup, skipping the blocks a triangle misses, instead of one thread
+// walking the triangle (shadow_raster.comp.glsl; on the H100 that walk made 16 soldiers' shadow pass
+// 4.8 ms). The map must still be the hardware one's, with the first test's bounds (measured on
+// lavapipe: coverage identical, depths over 1e-4 apart on 0.004 % of covered texels), and the records'
+// path must have run (886 records). Skipping blocks by the wrong corner of each fails it (coverage
+// differs on 6.8 % of covered texels).
 TEST_F(GpuTest, LargeCasterTrianglesKeepTheHardwareMap) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     app::SceneOptions scene;
@@ -157,13 +159,13 @@ TEST_F(GpuTest, LargeCasterTrianglesKeepTheHardwareMap) {
     const ShadowFrame hardware = renderWith(renderer, *context, render::ShadowRasterPath::Hardware, 0.7);
     const ShadowFrame compute = renderWith(renderer, *context, render::ShadowRasterPath::Compute, 0.7);
     ASSERT_TRUE(renderer.recorder().rastersShadowsInCompute());
-    const std::uint32_t blocks = test::readAll<std::uint32_t>(*context, renderer.recorder().computeShadowRaster()->largeTriangleBlocks())[0];
+    const std::uint32_t records = test::readAll<std::uint32_t>(*context, renderer.recorder().computeShadowRaster()->largeTriangleRecords())[0];
     const MapComparison maps = compareMaps(hardware.map, compute.map, 1e-4f);
     const double covered = static_cast<double>(maps.covered);
-    std::printf("%u blocks of large triangles; %zu texels covered, coverage differs on %zu (%.3f %%), depth on %zu (%.3f %%)\n",
-                blocks, maps.covered, maps.coverageDiffers, 100.0 * maps.coverageDiffers / covered, maps.depthDiffers,
+    std::printf("%u records of large triangles' blocks; %zu texels covered, coverage differs on %zu (%.3f %%), depth on %zu (%.3f %%)\n",
+                records, maps.covered, maps.coverageDiffers, 100.0 * maps.coverageDiffers / covered, maps.depthDiffers,
                 100.0 * maps.depthDiffers / covered);
-    EXPECT_GT(blocks, 100u) << "large triangles were shared out";
+    EXPECT_GT(records, 100u) << "large triangles were shared out";
     EXPECT_GT(maps.covered, 20000u) << "the casters cover the map";
     EXPECT_LT(maps.coverageDiffers, 0.005 * covered);
     EXPECT_LT(maps.depthDiffers, 0.005 * covered);
@@ -180,7 +182,9 @@ TEST_F(GpuTest, LargeCasterTrianglesKeepTheHardwareMap) {
 // within 1e-4 on all but 0.5 % (measured: none, at most two steps of 16 bits apart; the quads face the
 // light, so their depth is the centre's), pictures within 2/255 on 99.8 % of pixels (measured: all). A
 // quad whose place in its cell is mirrored fails it (coverage differs on 55 % of texels); so does
-// drawing no impostor caster (100 %).
+// drawing no impostor caster (100 %). With 100 casters for 4,096 workgroups each caster is shared among
+// 40 of them (impostor_shadow_raster.comp.glsl): every workgroup drawing its caster's first texels
+// instead of its own share fails it (coverage differs on 99.5 %).
 TEST_F(GpuTest, ComputeImpostorShadowsEqualTheHardwareOnes) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     app::SceneOptions scene;

@@ -1,7 +1,5 @@
 #include "render/impostor_shadow_raster.h"
 
-#include <algorithm>
-
 #include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
@@ -24,8 +22,9 @@ struct ImpostorShadowFrame {
     glm::uvec4 sizes;
 };
 
-// Workgroups a cascade: each takes casters in turn, so the dispatch needs no count from the GPU;
-// enough to fill an H100 (132 SMs) many times over.
+// Workgroups a cascade: each takes casters in turn, or a share of one when there are fewer casters
+// (impostor_shadow_raster.comp.glsl), so the dispatch needs no count from the GPU; enough to fill an
+// H100 (132 SMs) many times over.
 constexpr std::uint32_t kWorkgroups = 4096;
 
 constexpr gpu::Access kComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -83,8 +82,7 @@ void ImpostorShadowRaster::record(VkCommandBuffer cmd, const ShadowCascades& cas
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     const VkDescriptorSet sets[2] = {set_->set(), atlas_.set()};
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 2, sets, 0, nullptr);
-    const std::uint32_t groups = std::max(1u, std::min(kWorkgroups, lists_.characterCount()));
-    vkCmdDispatch(cmd, groups, 1, cascades.count);
+    vkCmdDispatch(cmd, kWorkgroups, 1, cascades.count);
 }
 
 }  // namespace render

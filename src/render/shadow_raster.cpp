@@ -34,13 +34,16 @@ constexpr gpu::Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_A
 constexpr gpu::Access kCopyRead{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
 
 constexpr std::uint32_t kPackGroupSize = 256;  // shadow_pack.comp.glsl's local_size_x
-// The large triangles' blocks (shadow_raster.comp.glsl): a 16-byte count, then 16 bytes a block. Room for
-// a block of 32 x 32 texels for every 256 texels of the map: the whole map four deep, more than a close
-// view of a few characters lists (a full list only sends the rest back to the slower walk per thread).
+// The large triangles' records (shadow_raster.comp.glsl): a 16-byte count, then 16 bytes a record of up
+// to 64 blocks of 16 x 16 texels. Every large triangle takes a record at least, so the list is sized by
+// triangles as much as by texels: a record for every 32 texels of the map (8 MiB at 4096²). At 65,536
+// records (one per 256 texels), 64 soldiers seen from high above, whose map fitted to them makes most of
+// their 71,424 triangles large, filled it, and the overflow's walk per thread took 6 ms on the H100.
+// A full list only sends the rest back to that slower walk.
 constexpr std::uint64_t kChunkHeaderBytes = 16;
 constexpr std::uint64_t kChunkBytes = 16;
-constexpr std::uint64_t kTexelsPerChunkRecord = 256;
-// Workgroups of the blocks' dispatch: enough to fill a large GPU, few enough to cost nothing when no
+constexpr std::uint64_t kTexelsPerChunkRecord = 32;
+// Workgroups of the records' dispatch: enough to fill a large GPU, few enough to cost nothing when no
 // block is listed (the crowd's usual frame).
 constexpr std::uint32_t kChunkGroups = 1024;
 
@@ -149,7 +152,7 @@ void ShadowRaster::bindVertices(const SkinnedVertices& vertices) {
 
 void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertices, const ShadowCascades& cascades) {
     bindVertices(vertices);
-    // The previous frame's pack read the depths, and its blocks' dispatch the list: done before both
+    // The previous frame's pack read the depths, and its records' dispatch the list: done before both
     // are cleared.
     constexpr gpu::Access kClear{VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
     gpu::bufferBarrier(cmd, depth_.buffer, kComputeRead, kClear);
@@ -171,7 +174,7 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     const RasterPush push{shadowRasterLight(cascades, size_), glm::uvec4(size_, perRow, lists_.drawCapacity(), cascades.count)};
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, cascades.count);
-    // The large triangles' blocks, listed by the dispatch above, each drawn by a workgroup.
+    // The large triangles' records, listed by the dispatch above, each drawn by a workgroup.
     gpu::bufferBarrier(cmd, chunks_.buffer, kComputeReadWrite, kComputeReadWrite);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, chunkPipeline_);
     vkCmdDispatch(cmd, kChunkGroups, 1, 1);

@@ -67,9 +67,9 @@ public:
     // The rasterized depth in the map's texel format (kShadowFormat, row-major), ready for
     // ShadowMap::copyFrom after rasterize.
     VkBuffer mapTexels() const { return packed_.buffer; }
-    // The large triangles' blocks listed by the last rasterize (shadow_raster.comp.glsl): a uint count
-    // and 12 bytes of padding, then a uvec4 a block. Read by tests, which check the blocks' path ran.
-    const gpu::Buffer& largeTriangleBlocks() const { return chunks_; }
+    // The large triangles' records listed by the last rasterize (shadow_raster.comp.glsl): a uint count
+    // and 12 bytes of padding, then a uvec4 a record of blocks. Read by tests, which check that path ran.
+    const gpu::Buffer& largeTriangleRecords() const { return chunks_; }
     VkDeviceSize bytes() const { return depth_.size + packed_.size + chunks_.size; }
     // Device bytes for a map `size` texels a side: the float depths, the packed texels and the list
     // of large triangles' blocks.
