@@ -174,8 +174,9 @@ void ShadowRaster::rasterize(VkCommandBuffer cmd, const SkinnedVertices& vertice
     const RasterPush push{shadowRasterLight(cascades, size_), glm::uvec4(size_, perRow, lists_.drawCapacity(), cascades.count)};
     vkCmdPushConstants(cmd, rasterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, perRow, (groups + perRow - 1) / perRow, cascades.count);
-    // The large triangles' records, listed by the dispatch above, each drawn by a workgroup.
-    gpu::bufferBarrier(cmd, chunks_.buffer, kComputeReadWrite, kComputeReadWrite);
+    // The large triangles' records, listed by the dispatch above, each drawn by a workgroup: the list and
+    // the depths (both dispatches' atomic mins) made visible to the second.
+    gpu::memoryBarrier(cmd, kComputeReadWrite, kComputeReadWrite);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, chunkPipeline_);
     vkCmdDispatch(cmd, kChunkGroups, 1, 1);
 }
