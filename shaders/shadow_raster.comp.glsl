@@ -16,7 +16,7 @@
 // thousands of texels wide, and one thread walking them held the frame (the H100, 16 soldiers: a 4.8 ms
 // shadow pass). So a triangle whose box holds more than kSmallTexels centres is listed instead: its box
 // cut into kBlock x kBlock blocks, a record for each run of up to kBlocksPerRecord of them, and a second
-// dispatch of this shader (kChunkPass) draws each record with a whole workgroup, a texel a thread,
+// dispatch of this shader (kRecordPass) draws each record with a whole workgroup, a texel a thread,
 // stepping over the blocks the triangle misses (a long thin triangle's box is mostly empty). Both draw
 // a texel by the same rules from the same triangle, so the map is the same texel for texel whichever
 // draws it. When the list is full the thread draws its triangle itself.
@@ -41,10 +41,10 @@ layout(std430, set = 0, binding = 4) buffer Depth { uint depth[]; };  // the map
 layout(std430, set = 0, binding = 5) readonly buffer ShadowStates { uint shadowStates[]; };  // per character
 // The large triangles' records (cleared to a count of 0 each frame): x the shadow draw, y the triangle
 // within it, z the cascade, w the record's first block (blocks numbered row by row over the box).
-layout(std430, set = 0, binding = 6) buffer Chunks { uint chunkCount; uint chunkPad[3]; uvec4 chunks[]; };
+layout(std430, set = 0, binding = 6) buffer Records { uint recordCount; uint recordPad[3]; uvec4 records[]; };
 
 // 0: one workgroup a caster draw, listing its large triangles; 1: one workgroup a record of blocks.
-layout(constant_id = 0) const uint kChunkPass = 0u;
+layout(constant_id = 0) const uint kRecordPass = 0u;
 const int kSmallTexels = 64;        // a box of more texel centres than this is shared out
 const int kBlock = 16;              // texels a side of a block
 const uint kBlocksPerRecord = 64u;  // blocks a record (a workgroup's share: up to 16,384 texels)
@@ -113,12 +113,12 @@ MapTriangle drawTriangle(DrawIndexedCommand command, uint t, uint c) {
 ivec2 blocksOf(MapTriangle m) { return (m.coverage.last - m.coverage.first + kBlock) / kBlock; }
 
 // Lists a large triangle's records for the second dispatch; false when the list has no room for them.
-bool listChunks(MapTriangle m, uint draw, uint t, uint c) {
+bool listRecords(MapTriangle m, uint draw, uint t, uint c) {
     const ivec2 blocks = blocksOf(m);
     const uint count = (uint(blocks.x * blocks.y) + kBlocksPerRecord - 1u) / kBlocksPerRecord;
-    const uint at = atomicAdd(chunkCount, count);
-    if (at + count > uint(chunks.length())) return false;
-    for (uint i = 0u; i < count; ++i) chunks[at + i] = uvec4(draw, t, c, i * kBlocksPerRecord);
+    const uint at = atomicAdd(recordCount, count);
+    if (at + count > uint(records.length())) return false;
+    for (uint i = 0u; i < count; ++i) records[at + i] = uvec4(draw, t, c, i * kBlocksPerRecord);
     return true;
 }
 
@@ -133,7 +133,7 @@ void drawCasters() {
         const MapTriangle m = drawTriangle(command, t, c);
         const ivec2 box = m.coverage.last - m.coverage.first + 1;
         if (any(lessThanEqual(box, ivec2(0)))) continue;
-        if (box.x * box.y > kSmallTexels && listChunks(m, draw, t, c)) continue;
+        if (box.x * box.y > kSmallTexels && listRecords(m, draw, t, c)) continue;
         for (int y = m.coverage.first.y; y <= m.coverage.last.y; ++y)
             for (int x = m.coverage.first.x; x <= m.coverage.last.x; ++x) drawTexel(m, x, y);
     }
@@ -156,14 +156,14 @@ bool mayCover(MapTriangle m, ivec2 first, ivec2 last) {
 }
 
 // A fixed grid of workgroups takes the listed records in turn, its threads over each block's texels.
-void drawChunks() {
-    const uint listed = min(chunkCount, uint(chunks.length()));
+void drawRecords() {
+    const uint listed = min(recordCount, uint(records.length()));
     for (uint i = gl_WorkGroupID.x; i < listed; i += gl_NumWorkGroups.x) {
-        const uvec4 chunk = chunks[i];
-        const MapTriangle m = drawTriangle(draws[push.sizes.z + chunk.x], chunk.y, chunk.z);
+        const uvec4 record = records[i];
+        const MapTriangle m = drawTriangle(draws[push.sizes.z + record.x], record.y, record.z);
         const ivec2 blocks = blocksOf(m);
-        const uint end = min(chunk.w + kBlocksPerRecord, uint(blocks.x * blocks.y));
-        for (uint block = chunk.w; block < end; ++block) {
+        const uint end = min(record.w + kBlocksPerRecord, uint(blocks.x * blocks.y));
+        for (uint block = record.w; block < end; ++block) {
             const ivec2 first = m.coverage.first + ivec2(block % uint(blocks.x), block / uint(blocks.x)) * kBlock;
             const ivec2 last = min(first + kBlock - 1, m.coverage.last);
             if (!mayCover(m, first, last)) continue;
@@ -175,8 +175,8 @@ void drawChunks() {
 }
 
 void main() {
-    if (kChunkPass == 0u)
+    if (kRecordPass == 0u)
         drawCasters();
     else
-        drawChunks();
+        drawRecords();
 }

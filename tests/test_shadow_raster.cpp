@@ -159,7 +159,8 @@ TEST_F(GpuTest, LargeCasterTrianglesKeepTheHardwareMap) {
     const ShadowFrame hardware = renderWith(renderer, *context, render::ShadowRasterPath::Hardware, 0.7);
     const ShadowFrame compute = renderWith(renderer, *context, render::ShadowRasterPath::Compute, 0.7);
     ASSERT_TRUE(renderer.recorder().rastersShadowsInCompute());
-    const std::uint32_t records = test::readAll<std::uint32_t>(*context, renderer.recorder().computeShadowRaster()->largeTriangleRecords())[0];
+    const std::uint32_t records =
+        test::readAll<std::uint32_t>(*context, renderer.recorder().computeShadowRaster()->largeTriangleRecords())[0];
     const MapComparison maps = compareMaps(hardware.map, compute.map, 1e-4f);
     const double covered = static_cast<double>(maps.covered);
     std::printf("%u records of large triangles' blocks; %zu texels covered, coverage differs on %zu (%.3f %%), depth on %zu (%.3f %%)\n",

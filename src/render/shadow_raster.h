@@ -69,8 +69,8 @@ public:
     VkBuffer mapTexels() const { return packed_.buffer; }
     // The large triangles' records listed by the last rasterize (shadow_raster.comp.glsl): a uint count
     // and 12 bytes of padding, then a uvec4 a record of blocks. Read by tests, which check that path ran.
-    const gpu::Buffer& largeTriangleRecords() const { return chunks_; }
-    VkDeviceSize bytes() const { return depth_.size + packed_.size + chunks_.size; }
+    const gpu::Buffer& largeTriangleRecords() const { return records_; }
+    VkDeviceSize bytes() const { return depth_.size + packed_.size + records_.size; }
     // Device bytes for a map `size` texels a side: the float depths, the packed texels and the list
     // of large triangles' blocks.
     static std::uint64_t bytesFor(std::uint32_t size);
@@ -85,12 +85,12 @@ private:
     std::uint32_t size_ = 0;
     gpu::Buffer depth_;   // one float's bits a texel: the atomic min's target
     gpu::Buffer packed_;  // the same depths as the map's 16-bit texels, two a word: the copy's source
-    gpu::Buffer chunks_;  // the large triangles' blocks, for the second dispatch (shadow_raster.comp.glsl)
+    gpu::Buffer records_;  // the large triangles' records, for the second dispatch (shadow_raster.comp.glsl)
     VkBuffer boundVertices_ = VK_NULL_HANDLE;
     std::unique_ptr<gpu::DescriptorBundle> rasterSet_;
     VkPipelineLayout rasterLayout_ = VK_NULL_HANDLE;
     VkPipeline rasterPipeline_ = VK_NULL_HANDLE;  // a workgroup a caster draw
-    VkPipeline chunkPipeline_ = VK_NULL_HANDLE;   // a workgroup a large triangle's block
+    VkPipeline recordPipeline_ = VK_NULL_HANDLE;  // a workgroup a large triangle's record of blocks
     std::unique_ptr<gpu::DescriptorBundle> packSet_;
     VkPipelineLayout packLayout_ = VK_NULL_HANDLE;
     VkPipeline packPipeline_ = VK_NULL_HANDLE;
