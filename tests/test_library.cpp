@@ -423,6 +423,13 @@ TEST_F(GpuTest, LibraryRefusesBadUseWithOneClearError) {
             crowdgpu::FrameView broken = view;
             broken.projection[0] = std::nanf("");
             expectError(crowdgpu::ErrorCode::InvalidArgument, "perspective", [&] { renderer.recordCompute(cmd, 0, broken); });
+            crowdgpu::FrameView empty = view;
+            empty.viewport.extent.height = 0;
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "viewport is empty", [&] { renderer.recordCompute(cmd, 0, empty); });
+            crowdgpu::FrameView wide = view;
+            wide.viewport.extent.width = context->properties.limits.maxViewportDimensions[0] + 1;
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "maxViewportDimensions",
+                        [&] { renderer.recordCompute(cmd, 0, wide); });
             renderer.recordCompute(cmd, 0, view);
             expectError(crowdgpu::ErrorCode::WrongOrder, "recordShadows", [&] { renderer.recordCharacters(cmd, 0); });
         });

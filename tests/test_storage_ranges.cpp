@@ -181,4 +181,27 @@ TEST(StorageRanges, CrowdRenderRefusesInOneLineWhatTheDeviceCannotBindAndTwoPass
     std::filesystem::remove(png);
 }
 
+// A viewport whose visibility buffer passes the range: `--raster compute` is refused in one line naming the
+// size before anything is drawn; the same size is within the device's viewport (16384 on lavapipe).
+TEST(StorageRanges, CrowdRenderRefusesRasterComputeForAViewportPastTheRangeInOneLine) {
+    const char* device = std::getenv("CROWD_TEST_DEVICE");
+    const std::uint64_t range =
+        app::HostDevice({false, device ? device : "", {}, false}).properties.limits.maxStorageBufferRange;
+    const std::uint32_t width = 16384, height = static_cast<std::uint32_t>(range / (8u * width) + 1);
+    if (height > 16384) GTEST_SKIP() << "this device binds a visibility buffer for every viewport";
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    const std::string png = (std::filesystem::temp_directory_path() /
+                             ("crowd-viewport-" + std::to_string(::getpid()) + ".png")).string();
+    const std::string deviceFlag = device ? std::string(" --device '") + device + "'" : "";
+    const test::ProgramResult r =
+        test::runProgram(CROWD_RENDER_BINARY, "--count 4 --impostors on --raster compute --frames 1 --size " + size +
+                                                  deviceFlag + " --out " + png);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("crowd-render: --size " + size + ": --raster compute binds a visibility buffer of ", 0), 0u)
+        << r.err;
+    EXPECT_NE(r.err.find("maxStorageBufferRange"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(png));
+}
+
 }  // namespace

@@ -270,6 +270,12 @@ struct DeviceLimitCheck {
 };
 DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings);
 
+// Why recordCompute would refuse a viewport of `extent` with these settings on this device, in one line
+// (empty: it draws it): past maxViewportDimensions, or, with Raster::Compute, a visibility buffer (8
+// bytes a pixel) past maxStorageBufferRange. Raster::Auto draws such a viewport with the hardware
+// rasterizer instead (and leaves the far crowd's layer, 32 bytes a pixel, out where it does not fit).
+std::string viewportProblem(VkPhysicalDevice physicalDevice, const RendererSettings& settings, VkExtent2D extent);
+
 class Renderer {
 public:
     // Builds pipelines for settings.target and allocates the crowd's buffers; their contents wait in

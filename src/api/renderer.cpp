@@ -185,6 +185,15 @@ DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd&
     });
 }
 
+std::string viewportProblem(VkPhysicalDevice physicalDevice, const RendererSettings& settings, VkExtent2D extent) {
+    return detail::translated([&] {
+        VkPhysicalDeviceProperties properties;
+        vkGetPhysicalDeviceProperties(physicalDevice, &properties);
+        return frame::viewportProblem(properties.limits, properties.deviceName,
+                                      detail::rendererOptions(settings).raster, extent);
+    });
+}
+
 namespace detail {
 
 Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::RecorderOptions& options,

@@ -45,6 +45,23 @@ render::RasterMode rasterInEffect(const gpu::VulkanContext& context, const Recor
     throw gpu::Error("raster compute needs " + missing, gpu::ErrorKind::Unsupported);
 }
 
+std::string viewportProblem(const VkPhysicalDeviceLimits& limits, const std::string& deviceName, render::RasterMode raster,
+                            VkExtent2D extent) {
+    const std::string size = std::to_string(extent.width) + "x" + std::to_string(extent.height);
+    const std::uint32_t* most = limits.maxViewportDimensions;
+    if (extent.width > most[0] || extent.height > most[1])
+        return "the viewport's " + size + " passes " + deviceName + "'s maxViewportDimensions of " +
+               std::to_string(most[0]) + "x" + std::to_string(most[1]);
+    // Under auto such a viewport goes to the hardware rasterizer (ImpostorRaster::record, the mesh path's
+    // gate); asked for compute, the frame cannot be drawn as asked.
+    if (raster == render::RasterMode::Compute && !render::visibilityFits(limits, extent))
+        return "raster compute binds a visibility buffer of " +
+               gpu::formatBytes(std::uint64_t{extent.width} * extent.height * 8) + " for the " + size +
+               " viewport, over " + deviceName + "'s maxStorageBufferRange of " +
+               gpu::formatBytes(limits.maxStorageBufferRange) + " (raster auto draws it on the hardware)";
+    return {};
+}
+
 CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options)
     : context_(context),
       crowd_(crowd),
@@ -106,7 +123,9 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
 }
 
 void CrowdRecorder::setShadowRaster(render::ShadowRasterPath path) {
-    if (path == render::ShadowRasterPath::Compute && !shadowRaster_)
+    // A map whose depths pass one storage binding stays with the hardware pass (rastersShadowsInCompute).
+    if (path == render::ShadowRasterPath::Compute && !shadowRaster_ &&
+        render::ShadowRaster::fits(context_.properties.limits, shadowMap_.size()))
         shadowRaster_ = std::make_unique<render::ShadowRaster>(context_, pool_, lists_, shadowMap_);
     shadowRasterPath_ = path;
 }
@@ -175,6 +194,13 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
         throw gpu::Error("recordCompute: the view or projection matrix is not a finite perspective view");
     if (view.viewport.extent.width == 0 || view.viewport.extent.height == 0)
         throw gpu::Error("recordCompute: the viewport is empty");
+    if (const std::string problem = viewportProblem(context_.properties.limits, context_.description.name, raster_,
+                                                    view.viewport.extent);
+        !problem.empty())
+        throw gpu::Error("recordCompute: " + problem,
+                         render::visibilityFits(context_.properties.limits, view.viewport.extent)
+                             ? gpu::ErrorKind::InvalidArgument
+                             : gpu::ErrorKind::Unsupported);
     views_[slot] = view;
     cascades_[slot] = shadowCascadesOf(view);
 
@@ -215,7 +241,7 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
     }
     // Auto's automatic limit: the mesh path when the hardware rasterizer was this slot's wall last time
     // (its frame's counts, read back: the host waited for the slot).
-    meshPathOn_[slot] = rastersMeshesInCompute() &&
+    meshPathOn_[slot] = rastersMeshesInCompute() && render::visibilityFits(context_.properties.limits, view.viewport.extent) &&
                         (!meshRasterGated_ || lists_.countsOf(slot).totalTriangles() >= meshRasterMinTriangles_);
     if (meshPathOn_[slot]) {
         // After skinning, before the colour draw: the small meshes leave the colour list for compute.

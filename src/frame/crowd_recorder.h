@@ -114,6 +114,11 @@ struct RecorderOptions {
 // The mesh-level cap in effect: options.meshCapacity when impostors are on from the start to take the
 // characters beyond it and it is below the crowd's size, else 0 (no cap).
 std::uint32_t meshCapacityInEffect(const RecorderOptions& options, const crowd::Crowd& crowd);
+// Why a viewport of `extent` cannot be drawn with this raster mode on a device with these limits, in one
+// line (empty: it can): past maxViewportDimensions, or, under raster compute, a visibility buffer past
+// maxStorageBufferRange (raster auto draws such a viewport on the hardware). recordCompute refuses it.
+std::string viewportProblem(const VkPhysicalDeviceLimits& limits, const std::string& deviceName, render::RasterMode raster,
+                            VkExtent2D extent);
 // The most characters a frame lists at a mesh level (DrawLists::drawCapacity): the mesh slots, and
 // the bone blocks when they belong to slots.
 std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crowd);

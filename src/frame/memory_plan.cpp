@@ -73,7 +73,8 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                                                options.method == skin::Method::VertexShader)},
                   {"shadow map", std::uint64_t{options.shadowMapSize} * options.shadowMapSize * 2},  // 16-bit depth
                   {"ground sunlight (shadow map on the ground)", render::GroundSunlight::bytesFor(options.shadowMapSize)}};
-    if (options.shadowRaster == render::ShadowRasterPath::Compute)
+    if (options.shadowRaster == render::ShadowRasterPath::Compute &&
+        render::ShadowRaster::fits(context.properties.limits, options.shadowMapSize))
         plan.items.push_back({"shadow map depth (compute raster)", render::ShadowRaster::bytesFor(options.shadowMapSize)});
     if (options.events)
         plan.items.push_back({"event buffer, clip events, previous segments",

@@ -1,5 +1,6 @@
 #include "render/far_crowd_layer.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 
@@ -54,6 +55,11 @@ void FarCrowdLayer::release() {
         gpu::destroyBuffer(context_, slot.depth);
         gpu::destroyBuffer(context_, slot.sums);
     }
+}
+
+bool FarCrowdLayer::fits(const VkPhysicalDeviceLimits& limits, VkExtent2D extent) {
+    const std::uint64_t pixels = std::uint64_t{extent.width} * extent.height;
+    return pixels * std::max<std::uint64_t>(8, FAR_CROWD_CHANNELS * 4) <= limits.maxStorageBufferRange;
 }
 
 void FarCrowdLayer::fit(std::uint32_t index, VkExtent2D extent) {

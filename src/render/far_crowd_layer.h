@@ -46,6 +46,9 @@ public:
     FarCrowdLayer(const FarCrowdLayer&) = delete;
     FarCrowdLayer& operator=(const FarCrowdLayer&) = delete;
 
+    // Whether the layer's buffers for `extent` fit one storage binding each on a device with these limits
+    // (the sums, 32 bytes a pixel, are the largest: 2048 x 2048 pixels in the 128 MiB every device allows).
+    static bool fits(const VkPhysicalDeviceLimits& limits, VkExtent2D extent);
     // The slot's buffers at `extent` (made again when it changes: the host has waited for the slot's
     // previous frame; the rasterizer's set then binds the new ones).
     void fit(std::uint32_t slot, VkExtent2D extent);

@@ -125,11 +125,12 @@ void ImpostorRaster::makeSets(std::uint32_t index) {
     Slot& slot = slots_[index];
     slot.rasterSet.reset();
     slot.resolveSet.reset();
-    // The far layer's buffers, or the visibility buffer in their place (never written: far-crowd off).
-    if (farLayer_) farLayer_->fit(index, slot.extent);
-    slot.farBound = farLayer_ != nullptr;
-    const VkBuffer farDepth = farLayer_ ? farLayer_->depth(index).buffer : slot.visibility.buffer;
-    const VkBuffer farSums = farLayer_ ? farLayer_->sums(index).buffer : slot.visibility.buffer;
+    // The far layer's buffers, or the visibility buffer in their place (never written: far-crowd off, or
+    // a layer too large for one storage binding at this extent).
+    slot.farBound = farLayer_ && FarCrowdLayer::fits(context_.properties.limits, slot.extent);
+    if (slot.farBound) farLayer_->fit(index, slot.extent);
+    const VkBuffer farDepth = slot.farBound ? farLayer_->depth(index).buffer : slot.visibility.buffer;
+    const VkBuffer farSums = slot.farBound ? farLayer_->sums(index).buffer : slot.visibility.buffer;
     const gpu::BufferBinding raster[] = {{kStorage, atlas_.modelTable().buffer},
                                          {kStorage, crowd_.characters().buffer},
                                          {kStorage, lists_.impostorList().buffer},
@@ -149,12 +150,20 @@ void ImpostorRaster::makeSets(std::uint32_t index) {
 void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm::mat4& viewProjection,
                             const glm::vec3& eye, VkExtent2D extent, bool blend, bool averageFar) {
     Slot& slot = slots_[index];
-    const bool remake = extent.width != slot.extent.width || extent.height != slot.extent.height;
+    // A viewport whose visibility buffer would pass one storage binding on this device: every impostor
+    // goes to the hardware path this frame, through the same passes over a one-pixel buffer that stays
+    // empty (raster compute refuses such a viewport before: CrowdRecorder::recordCompute). The far layer,
+    // four times larger a pixel, is left out on its own where it alone does not fit.
+    const VkPhysicalDeviceLimits& limits = context_.properties.limits;
+    const bool hardwareOnly = !visibilityFits(limits, extent);
+    averageFar = averageFar && !hardwareOnly && FarCrowdLayer::fits(limits, extent);
+    const VkExtent2D visibilityExtent = hardwareOnly ? VkExtent2D{1, 1} : extent;
+    const bool remake = visibilityExtent.width != slot.extent.width || visibilityExtent.height != slot.extent.height;
     if (averageFar && !farLayer_)
         farLayer_ = std::make_unique<FarCrowdLayer>(context_, sceneSetLayout_, target_,
                                                     static_cast<std::uint32_t>(slots_.size()), resolveTilePixels_);
     if (remake)
-        makeVisibility(index, extent);
+        makeVisibility(index, visibilityExtent);
     else if (averageFar && !slot.farBound)
         makeSets(index);  // the layer is new: bind it
     slot.averaged = averageFar;
@@ -185,7 +194,8 @@ void ImpostorRaster::record(VkCommandBuffer cmd, std::uint32_t index, const glm:
     gpu::ImpostorRasterPush push{};
     push.viewProjection = viewProjection;
     push.cameraPosition = glm::vec4(eye, 1.0f);
-    push.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height), limitPixels_,
+    push.viewport = glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
+                              hardwareOnly ? -1.0f : limitPixels_,  // no side is under -1: all to the hardware
                               static_cast<float>(IMPOSTOR_RASTER_LARGE_PIXELS));
     push.limits = glm::uvec4(capacity, groups * IMPOSTOR_RASTER_WORKGROUP,
                              std::min(capacity, context_.properties.limits.maxComputeWorkGroupCount[0]), blend ? 1u : 0u);

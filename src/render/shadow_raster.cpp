@@ -103,6 +103,11 @@ std::uint64_t ShadowRaster::bytesFor(std::uint32_t size) {
     return texelsOf(size) * 4 + packedWordsOf(size) * 4 + recordBytesOf(size);
 }
 
+bool ShadowRaster::fits(const VkPhysicalDeviceLimits& limits, std::uint32_t size) {
+    const std::uint64_t largest = std::max({texelsOf(size) * 4, packedWordsOf(size) * 4, recordBytesOf(size)});
+    return largest <= limits.maxStorageBufferRange;
+}
+
 ShadowRaster::~ShadowRaster() { release(); }
 
 void ShadowRaster::release() {

@@ -8,7 +8,9 @@
 // switched off, are drawn over the copied map by the graphics pipeline. The map is the hardware pass's
 // texel for texel but for rounding on triangle edges (tests/test_shadow_raster.cpp).
 // Only for methods whose skinned vertices are in a buffer (not the `vs` baseline, which skins while
-// it draws), and only when that buffer's position stream fits one storage binding.
+// it draws), only when that buffer's position stream fits one storage binding, and only for maps whose
+// float depths fit one (fits: a 4096² map takes 64 MiB, a 6000² one more than the 128 MiB every Vulkan
+// device allows); otherwise the hardware pass draws the casters.
 #include <cstdint>
 #include <memory>
 
@@ -74,6 +76,9 @@ public:
     // Device bytes for a map `size` texels a side: the float depths, the packed texels and the list
     // of large triangles' blocks.
     static std::uint64_t bytesFor(std::uint32_t size);
+    // Whether this pass's buffers for a map `size` texels a side each fit one storage binding on a device
+    // with these limits (the float depths, 4 bytes a texel, are the largest).
+    static bool fits(const VkPhysicalDeviceLimits& limits, std::uint32_t size);
 
 private:
     void bindVertices(const SkinnedVertices& vertices);

@@ -7,6 +7,10 @@
 
 namespace render {
 
+bool visibilityFits(const VkPhysicalDeviceLimits& limits, VkExtent2D extent) {
+    return std::uint64_t{extent.width} * extent.height * 8 <= limits.maxStorageBufferRange;
+}
+
 VisibilityResolve::VisibilityResolve(const gpu::VulkanContext& context, std::span<const std::uint32_t> fragmentShader,
                                      VkPipelineLayout layout, const TargetFormat& target, std::uint32_t framesInFlight,
                                      std::uint32_t tilePixels, ResolveWrite write)

@@ -179,6 +179,16 @@ std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd
            visibility;
 }
 
+// The image's size against what the renderer's recordCompute draws (crowdgpu::viewportProblem), in the
+// command line's words.
+static void checkViewport(const HostDevice& device, const crowdgpu::RendererSettings& settings, VkExtent2D size) {
+    std::string problem = crowdgpu::viewportProblem(device.physicalDevice, settings, size);
+    if (problem.empty()) return;
+    for (const std::string words : {"raster compute", "raster auto"})
+        if (const std::size_t at = problem.find(words); at != std::string::npos) problem.insert(at, "--");
+    throw Error("--size " + std::to_string(size.width) + "x" + std::to_string(size.height) + ": " + problem);
+}
+
 void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, const crowdgpu::RendererSettings& settings,
                     VkExtent2D size) {
     checkAntiAliasing(device, settings.target.samples);
@@ -188,7 +198,10 @@ void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, cons
         throw Error(describeShortfall({crowd.size(), size, crowdgpu::methodName(settings.method), needed,
                                        renderTargetBytes(size, settings.target.samples), available, device.description.name}));
     const crowdgpu::DeviceLimitCheck limits = crowdgpu::checkDeviceLimits(device.physicalDevice, crowd, settings);
-    if (limits.problem.empty()) return;
+    if (limits.problem.empty()) {
+        checkViewport(device, settings, size);
+        return;
+    }
     const std::string flag = limits.meshCapacityBound ? "--mesh-capacity " + std::to_string(settings.meshCapacity)
                                                       : "--count " + std::to_string(crowd.size());
     std::string message = limits.problem;
