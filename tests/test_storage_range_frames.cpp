@@ -6,7 +6,6 @@
 // Validation (with synchronization validation) stays silent: binding past the range is a validation
 // error, which fails the test. On a device whose range holds these buffers the tests skip.
 #include <cstdio>
-#include <cstring>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -22,10 +21,21 @@ namespace {
 using test::GpuTest;
 
 gpu::ImpostorSplit impostorSplitOf(const gpu::VulkanContext& context, const test::TestRenderer& renderer) {
-    gpu::ImpostorSplit split{};
-    const std::vector<std::byte> bytes = test::readBuffer(context, renderer.recorder().impostorRaster()->split());
-    std::memcpy(&split, bytes.data(), sizeof split);
-    return split;
+    return test::readAll<gpu::ImpostorSplit>(context, renderer.recorder().impostorRaster()->split()).at(0);
+}
+
+// Impostors on, single-sampled, no shadows, one frame in flight, at these LOD and impostor thresholds.
+test::RendererOptions impostorOptions(VkExtent2D size, float lod0, float lod1, float impostor) {
+    test::RendererOptions options;
+    options.size = size;
+    options.method = skin::Method::Compute;
+    options.shadows = false;
+    options.framesInFlight = 1;
+    options.cull.impostors = true;
+    options.cull.lodThresholds[0] = lod0;
+    options.cull.lodThresholds[1] = lod1;
+    options.cull.impostorThreshold = impostor;
+    return options;
 }
 
 app::Rgba8Image pictureOf(test::TestRenderer& renderer, const app::Camera& camera, double time) {
@@ -125,16 +135,9 @@ TEST_F(GpuTest, AViewportPastTheStorageRangeDrawsOnTheHardwareUnderAuto) {
     app::SceneOptions scene;
     scene.count = 200;
     crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
-    test::RendererOptions options;
-    options.size = kLarge;
-    options.method = skin::Method::Compute;
-    options.shadows = false;
-    options.framesInFlight = 1;
-    options.cull.impostors = true;
+    // The farther soldiers impostors (under the 128 px auto rasterizes in compute), the nearer meshes.
+    test::RendererOptions options = impostorOptions(kLarge, 1000.0f, 600.0f, 60.0f);
     options.cull.lodFade = false;
-    options.cull.lodThresholds[0] = 1000.0f;
-    options.cull.lodThresholds[1] = 600.0f;
-    options.cull.impostorThreshold = 60.0f;  // the farther soldiers impostors (under 128 px)
     options.raster = render::RasterMode::Auto;
     options.meshRasterLimitPixels = 100000.0f;
     test::TestRenderer automatic(*device, crowd, options);
@@ -196,15 +199,7 @@ TEST_F(GpuTest, AFarLayerPastTheStorageRangeIsLeftOut) {
     app::SceneOptions scene;
     scene.count = 300;
     crowd::Crowd crowd(soldier, test::buildCharacters(soldier, scene));
-    test::RendererOptions options;
-    options.size = kLarge;
-    options.method = skin::Method::Compute;
-    options.shadows = false;
-    options.framesInFlight = 1;
-    options.cull.impostors = true;
-    options.cull.lodThresholds[0] = 4000.0f;
-    options.cull.lodThresholds[1] = 3000.0f;
-    options.cull.impostorThreshold = 2000.0f;  // every soldier an impostor
+    test::RendererOptions options = impostorOptions(kLarge, 4000.0f, 3000.0f, 2000.0f);  // every soldier an impostor
     options.raster = render::RasterMode::Compute;
     options.farCrowd = true;
     test::TestRenderer averaging(*device, crowd, options);
