@@ -47,18 +47,21 @@ render::RasterMode rasterInEffect(const gpu::VulkanContext& context, const Recor
 
 std::string viewportProblem(const VkPhysicalDeviceLimits& limits, const std::string& deviceName, render::RasterMode raster,
                             VkExtent2D extent) {
-    const std::string size = std::to_string(extent.width) + "x" + std::to_string(extent.height);
+    // Called every frame by recordCompute: words are made only for a refusal.
+    const auto size = [](std::uint32_t width, std::uint32_t height) {
+        return std::to_string(width) + "x" + std::to_string(height);
+    };
     const std::uint32_t* most = limits.maxViewportDimensions;
     if (extent.width > most[0] || extent.height > most[1])
-        return "the viewport's " + size + " passes " + deviceName + "'s maxViewportDimensions of " +
-               std::to_string(most[0]) + "x" + std::to_string(most[1]);
+        return "the viewport's " + size(extent.width, extent.height) + " passes " + deviceName +
+               "'s maxViewportDimensions of " + size(most[0], most[1]);
     // Under auto such a viewport goes to the hardware rasterizer (ImpostorRaster::record, the mesh path's
     // gate); asked for compute, the frame cannot be drawn as asked.
     if (raster == render::RasterMode::Compute && !render::visibilityFits(limits, extent))
-        return "raster compute binds a visibility buffer of " +
-               gpu::formatBytes(std::uint64_t{extent.width} * extent.height * 8) + " for the " + size +
-               " viewport, over " + deviceName + "'s maxStorageBufferRange of " +
-               gpu::formatBytes(limits.maxStorageBufferRange) + " (raster auto draws it on the hardware)";
+        return "raster compute binds a visibility buffer of " + gpu::formatBytes(render::visibilityBytes(extent)) +
+               " for the " + size(extent.width, extent.height) + " viewport, over " + deviceName +
+               "'s maxStorageBufferRange of " + gpu::formatBytes(limits.maxStorageBufferRange) +
+               " (raster auto draws it on the hardware)";
     return {};
 }
 

@@ -23,6 +23,12 @@ struct ResolvePush {
 };
 // The tiles' vertex shader (visibility_tiles.vert.glsl) reads the viewport there.
 static_assert(offsetof(ResolvePush, viewport) == 16);
+
+// The layer's two buffers' bytes at `extent`: a 64-bit depth word a pixel, and FAR_CROWD_CHANNELS
+// 32-bit sums a pixel.
+std::uint64_t pixelsOf(VkExtent2D extent) { return std::uint64_t{extent.width} * extent.height; }
+std::uint64_t depthBytes(VkExtent2D extent) { return pixelsOf(extent) * 8; }
+std::uint64_t sumsBytes(VkExtent2D extent) { return pixelsOf(extent) * FAR_CROWD_CHANNELS * 4; }
 }  // namespace
 
 FarCrowdLayer::FarCrowdLayer(const gpu::VulkanContext& context, VkDescriptorSetLayout sceneSetLayout,
@@ -58,8 +64,7 @@ void FarCrowdLayer::release() {
 }
 
 bool FarCrowdLayer::fits(const VkPhysicalDeviceLimits& limits, VkExtent2D extent) {
-    const std::uint64_t pixels = std::uint64_t{extent.width} * extent.height;
-    return pixels * std::max<std::uint64_t>(8, FAR_CROWD_CHANNELS * 4) <= limits.maxStorageBufferRange;
+    return std::max(depthBytes(extent), sumsBytes(extent)) <= limits.maxStorageBufferRange;
 }
 
 void FarCrowdLayer::fit(std::uint32_t index, VkExtent2D extent) {
@@ -69,10 +74,8 @@ void FarCrowdLayer::fit(std::uint32_t index, VkExtent2D extent) {
     gpu::destroyBuffer(context_, slot.depth);
     gpu::destroyBuffer(context_, slot.sums);
     slot.extent = extent;
-    const std::uint64_t pixels = std::uint64_t{extent.width} * extent.height;
-    slot.depth = gpu::createBuffer(context_, pixels * 8, kUsage, gpu::MemoryUse::DeviceLocal, "far crowd depth");
-    slot.sums = gpu::createBuffer(context_, pixels * FAR_CROWD_CHANNELS * 4, kUsage, gpu::MemoryUse::DeviceLocal,
-                                  "far crowd sums");
+    slot.depth = gpu::createBuffer(context_, depthBytes(extent), kUsage, gpu::MemoryUse::DeviceLocal, "far crowd depth");
+    slot.sums = gpu::createBuffer(context_, sumsBytes(extent), kUsage, gpu::MemoryUse::DeviceLocal, "far crowd sums");
     const gpu::BufferBinding bindings[2] = {{kStorage, slot.depth.buffer}, {kStorage, slot.sums.buffer}};
     slot.resolveSet = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_FRAGMENT_BIT, bindings);
 }

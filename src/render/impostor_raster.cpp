@@ -116,7 +116,7 @@ void ImpostorRaster::makeVisibility(std::uint32_t index, VkExtent2D extent) {
     slot.resolveSet.reset();
     gpu::destroyBuffer(context_, slot.visibility);
     slot.extent = extent;
-    slot.visibility = gpu::createBuffer(context_, std::uint64_t{extent.width} * extent.height * 8, kUsage,
+    slot.visibility = gpu::createBuffer(context_, visibilityBytes(extent), kUsage,
                                         gpu::MemoryUse::DeviceLocal, "visibility buffer");
     makeSets(index);
 }

@@ -144,7 +144,7 @@ void MeshRaster::makeSets(std::uint32_t index, VkExtent2D extent, const SkinnedV
     if (extent.width != slot.extent.width || extent.height != slot.extent.height || !slot.visibility.buffer) {
         gpu::destroyBuffer(context_, slot.visibility);
         slot.extent = extent;
-        slot.visibility = gpu::createBuffer(context_, std::uint64_t{extent.width} * extent.height * 8, kUsage,
+        slot.visibility = gpu::createBuffer(context_, visibilityBytes(extent), kUsage,
                                             gpu::MemoryUse::DeviceLocal, "mesh visibility buffer");
     }
     const VkBuffer skinned = vertices.buffer->buffer;

@@ -7,8 +7,10 @@
 
 namespace render {
 
+std::uint64_t visibilityBytes(VkExtent2D extent) { return std::uint64_t{extent.width} * extent.height * 8; }
+
 bool visibilityFits(const VkPhysicalDeviceLimits& limits, VkExtent2D extent) {
-    return std::uint64_t{extent.width} * extent.height * 8 <= limits.maxStorageBufferRange;
+    return visibilityBytes(extent) <= limits.maxStorageBufferRange;
 }
 
 VisibilityResolve::VisibilityResolve(const gpu::VulkanContext& context, std::span<const std::uint32_t> fragmentShader,

@@ -27,9 +27,11 @@ constexpr VkShaderStageFlags kResolvePushStages = VK_SHADER_STAGE_VERTEX_BIT | V
 // character's), or a layer over it (colour blended by the fragment's alpha, depth tested, not written).
 enum class ResolveWrite { Opaque, LayerOver };
 
-// Whether a visibility buffer (one 64-bit word a pixel) for `extent` fits one storage binding on a device
-// with these limits: the compute rasterizers bind it whole. Every Vulkan device allows 128 MiB, 4096 x
-// 4096 pixels; a larger viewport on a device with no more stays with the hardware rasterizer.
+// Device bytes of a visibility buffer for `extent`: one 64-bit word a pixel.
+std::uint64_t visibilityBytes(VkExtent2D extent);
+// Whether that buffer fits one storage binding on a device with these limits: the compute rasterizers
+// bind it whole. Every Vulkan device allows 128 MiB, 4096 x 4096 pixels; a larger viewport on a device
+// with no more stays with the hardware rasterizer.
 bool visibilityFits(const VkPhysicalDeviceLimits& limits, VkExtent2D extent);
 
 class VisibilityResolve {
