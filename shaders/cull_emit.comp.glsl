@@ -15,11 +15,10 @@
 // skinning method that reads it (they run after this pass). Characters not listed keep a stale ids.y
 // that nothing reads.
 //
-// A character in view fading to the next mesh level (gpu_types.h, FADE_SHIFT) keeps its colour draw
-// (drawn dithered: its finer share) and gets a partner draw, the coarser level's index range over the
-// same skinned vertices (a prefix of them, as for shadows), appended after the shadow draws; the colour
-// pass draws those with the complementary dither. One fading to its impostor has no partner here: the
-// cull pass listed it as an impostor too.
+// A character in view fading to the next mesh level (gpu_types.h, FADE_SHIFT) is drawn as any other:
+// skinning morphs it (shaders/lod_morph.glsl.inc); it is only counted. One fading into its impostor
+// is drawn from a list of its own (after the shadow draws), dithered on its mesh's share of its
+// pixels; the cull pass listed it as an impostor too.
 #include "gpu_types.h"
 
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
@@ -29,7 +28,7 @@ layout(push_constant) uniform Push {
     uint characterDrawsOn;  // 1: write the per-character draws too
     uint shadowDrawBase;    // where the shadow draws start in `draws` (its colour draws' capacity)
     uint slotBoneRows;      // BoneRows per mesh slot's bone block; 0: blocks per character (ids.y fixed)
-    uint fadeDrawBase;      // where the fade partners' draws start in `draws` (after the shadow draws)
+    uint fadingDrawBase;    // where the draws of those fading into impostors start in `draws` (after the shadow draws)
 };
 layout(std430, set = 0, binding = 0) readonly buffer Cull { CullUniforms cull; };  // not a uniform buffer (gpu_types.h)
 layout(std430, set = 0, binding = 2) buffer Characters { CharacterRecord characters[]; };
@@ -57,22 +56,21 @@ void main() {
         BucketRecord shadowBucket = buckets[b - bucket.list.y + (shadow & SHADOW_LEVEL_MASK)];
         uint vertexOffset = fixedLayout != 0u ? bucket.fixedLayout.x + characters[c].ids.z * bucket.mesh.z
                                               : frames[b].vertexBase + k * bucket.mesh.z;
-        // A fading character (in view, within a fade band) is drawn from its own list below, dithered.
+        // Fading (in view, within a fade band): into its coarser mesh level (morphed, drawn as the
+        // others), or from its last mesh level into its impostor.
         bool fading = inView != 0u && (shadow >> FADE_SHIFT) != 0u;
-        draws[i] = DrawIndexedCommand(bucket.mesh.y, fading ? 0u : inView, bucket.mesh.x, int(vertexOffset), c);
+        bool intoImpostor = fading && bucket.list.y + 1u == LOD_COUNT;
+        draws[i] = DrawIndexedCommand(bucket.mesh.y, intoImpostor ? 0u : inView, bucket.mesh.x, int(vertexOffset), c);
         if (slotBoneRows != 0u) characters[c].ids.y = i * slotBoneRows;
-        // Its colour draw is listed apart (after the fade partners') for the pipeline that dithers, and
-        // has no instance in draws[i]: the colour pass draws everyone else with the pipeline that does
-        // not discard and so keeps the early depth test (a vertex shader skipping the fading instead
-        // cost the vertex-bound frames more than it saved: docs/picture-quality.md).
-        if (fading)
-            draws[fadeDrawBase + shadowDrawBase + atomicAdd(totals.fading.x, 1u)] =
+        // Its colour draw is listed apart for the pipeline that dithers, and has no instance in
+        // draws[i]: the colour pass draws everyone else with the pipeline that does not discard and so
+        // keeps the early depth test (a vertex shader skipping them instead cost the vertex-bound
+        // frames more than it saved: docs/picture-quality.md).
+        if (intoImpostor)
+            draws[fadingDrawBase + atomicAdd(totals.fading.x, 1u)] =
                 DrawIndexedCommand(bucket.mesh.y, 1u, bucket.mesh.x, int(vertexOffset), c);
-        if (inView != 0u && (shadow >> FADE_SHIFT) != 0u && bucket.list.y + 1u < LOD_COUNT) {
-            BucketRecord coarser = buckets[b + 1u];
-            draws[fadeDrawBase + atomicAdd(totals.fadeDrawCount, 1u)] =
-                DrawIndexedCommand(coarser.mesh.y, 1u, coarser.mesh.x, int(vertexOffset), c);
-        }
+        else if (fading)
+            atomicAdd(totals.morphCount, 1u);
         if (casts)
             draws[shadowDrawBase + atomicAdd(totals.shadowDrawCount, 1u)] =
                 DrawIndexedCommand(shadowBucket.mesh.y, 1u, shadowBucket.mesh.x, int(vertexOffset), c);

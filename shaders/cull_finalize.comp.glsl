@@ -38,7 +38,7 @@ void main() {
     totals.drawCount = drawBase;
     totals.skinnedVertices = vertexBase;
     totals.shadowDrawCount = 0u;  // the emit pass appends the shadow draws
-    totals.fadeDrawCount = 0u;    // and the fade partners' draws
-    totals.fading = uvec4(0u);    // and the fading characters' own colour draws
+    totals.morphCount = 0u;       // counts the characters morphing between mesh levels
+    totals.fading = uvec4(0u);    // and lists those fading into impostors
     totals.emitDispatch = uvec4(groupsFor(drawBase, CULL_WORKGROUP_SIZE), 1u, 1u, 0u);
 }

@@ -11,14 +11,14 @@
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(push_constant) uniform Push { vec4 cameraPosition; };
 layout(location = 0) out vec4 outColor;
-// Which level of a fading character this pipeline draws (fade_dither.glsl.inc): 0 no fades (every
-// pixel; no discard, so the depth test may stay early), 1 the finer level (the colour draws: a
-// character not fading has a share of 0 and keeps every pixel), 2 the coarser (the fade partners' draws).
-layout(constant_id = 0) const uint kFadeSide = 0u;
+// 1: this pipeline draws characters fading into their impostors, on the pixels the impostor's share of
+// the dither leaves them (fade_dither.glsl.inc); 0: every pixel, with no discard, so the depth test
+// may stay early (fades between mesh levels are morphs made while skinning, drawn whole).
+layout(constant_id = 0) const uint kDithered = 0u;
 
 void main() {
     vec3 albedo = drawAlbedo(vMaterial) * sampleBaseColor(drawTextureSlot(vMaterial), vUv);
     // After the texture read, which needs its neighbours' coordinates for derivatives.
-    if (kFadeSide != 0u && !fadeDraws(gl_FragCoord.xy, drawFadeShare(vMaterial), kFadeSide == 2u)) discard;
+    if (kDithered != 0u && !fadeDraws(gl_FragCoord.xy, drawFadeShare(vMaterial), false)) discard;
     outColor = vec4(shade(scene, vNormal, albedo, vWorld, cameraPosition.xyz), 1.0);
 }

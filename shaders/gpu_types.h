@@ -36,10 +36,12 @@ using uint = std::uint32_t;
 #define SHADOW_CASCADE_SHIFT 4u
 // The same word's upper half: while a character's size is in the fade band of a threshold (lod-fade,
 // shaders/cull.glsl.inc), the share of the coarser of its two levels in steps of 1/FADE_STEPS (0: not
-// fading). It is drawn at both: the finer (its level, skinned) on the pixels whose screen-space dither
-// is at or above the share, the coarser (the next mesh level's index range over the same skinned
-// vertices, or its impostor) on the others (shaders/fade_dither.glsl.inc). FADE_STEPS is the dither's
-// number of thresholds: a finer share would draw the same pixels.
+// fading). Between mesh levels the character is skinned and drawn at the finer level, whose vertices
+// the coarser one drops move that share of the way to their places on its surface
+// (shaders/lod_morph.glsl.inc). Into its impostor it is drawn at both: its last mesh level on the
+// pixels whose screen-space dither is at or above the share, the impostor on the others
+// (shaders/fade_dither.glsl.inc). FADE_STEPS is the dither's number of thresholds: a finer share would
+// draw the same pixels.
 #define FADE_SHIFT 16u
 #define FADE_STEPS 64u
 // Threads per workgroup of the cull, emit and skinning compute passes.
@@ -63,6 +65,14 @@ struct SkinVertex {
     vec4 normal;    // xyz unit normal, w = material index
     uvec4 joints;   // 4 joint indices into the character's bone block
     vec4 weights;   // 4 weights, summing to 1
+};
+
+// Where a vertex goes as its character fades into the next coarser mesh level (model/lod_morph.h):
+// xyz the model vertex indices of a triangle of that level, w the barycentric weights of its second
+// and third corners as two unorm16 (the second's in the low half; the first's is 1 minus both). One
+// per pooled bind-pose vertex (GeometryPool::lodMorphTargets), read at the same index.
+struct LodMorphTarget {
+    uvec4 target;
 };
 
 // One skinning matrix as three rows of a 3x4 affine matrix: row i dotted with (p, 1) gives
@@ -134,9 +144,10 @@ struct DrawTotals {
     uint drawCount;       // visible characters = draws in the compacted list
     uint skinnedVertices; // vertices the skinning pass writes
     uint shadowDrawCount; // mesh shadow casters = draws in the shadow pass's compacted list
-    uint fadeDrawCount;   // fading characters whose coarser level is a mesh: draws in the fade partners' list
+    uint morphCount;      // characters in view morphing into their coarser mesh level (fades; counted)
     uvec4 emitDispatch;   // indirect dispatch of the emit pass (x groups, y = z = 1)
-    uvec4 fading;         // x: fading characters' colour draws (their finer share, dithered), in their own list
+    uvec4 fading;         // x: characters fading into their impostors: colour draws (their mesh's share,
+                          // dithered), in their own list
 };
 
 // Cell sets a model's impostors may have: one per combination of props (mask) its characters carry,

@@ -4,7 +4,9 @@
 // per (model, LOD) bucket, sized by culling (an indirect dispatch). A workgroup skins
 // CULL_WORKGROUP_SIZE consecutive vertices of the LOD for CHARACTERS_PER_GROUP visible characters: their
 // bones are staged once in shared memory, and each thread loads its bind-pose vertex once and reuses
-// it for every character, so device memory sees little more than the output writes.
+// it for every character, so device memory sees little more than the output writes. A character
+// fading into its coarser mesh level has the vertices that level drops morphed toward it
+// (lod_morph.glsl.inc): their targets are read once per thread too, and skinned only for such characters.
 #include "gpu_types.h"
 #include "skinning.glsl.inc"
 
@@ -22,8 +24,14 @@ layout(std430, set = 0, binding = 5) readonly buffer Buckets { BucketRecord buck
 layout(std430, set = 0, binding = 6) readonly buffer Frames { BucketFrame frames[]; };
 // This frame's visible characters, or (fixed layout) every character of the model in rank order.
 layout(std430, set = 0, binding = 7) readonly buffer List { uint list[]; };
+layout(std430, set = 0, binding = 8) readonly buffer States { uint states[]; };  // gpu_types.h, FADE_SHIFT
+layout(std430, set = 0, binding = 9) readonly buffer MorphTargets { LodMorphTarget morphTargets[]; };
 
 shared BoneRows groupBones[CHARACTERS_PER_GROUP * JOINT_COUNT];
+shared float groupShares[CHARACTERS_PER_GROUP];  // each character's share of its coarser level
+
+#define LOD_MORPH_BONE(i) groupBones[i]
+#include "lod_morph.glsl.inc"
 
 void main() {
     BucketRecord bucket = buckets[params.bucket.x];
@@ -34,6 +42,9 @@ void main() {
     uint vertexIndex = gl_WorkGroupID.y * CULL_WORKGROUP_SIZE + gl_LocalInvocationIndex;
     SkinVertex v;
     if (vertexIndex < vertexCount) v = vertices[bucket.mesh.w + vertexIndex];
+    bool moves = vertexIndex < vertexCount && lodMorphMoves(params.bucket.x, vertexIndex);
+    LodMorph morph;
+    if (moves) morph = lodMorphOf(bucket.mesh.w, vertexIndex);
 
     // A grid-stride loop over groups of characters: a bucket larger than one dispatch's x limit
     // takes several turns. The loop bound is the same for the whole workgroup, as barrier() needs.
@@ -44,12 +55,17 @@ void main() {
             uint k = first + i / JOINT_COUNT;
             if (k < count) groupBones[i] = bones[characters[list[bucket.list.z + k]].ids.y + i % JOINT_COUNT];
         }
+        if (gl_LocalInvocationIndex < CHARACTERS_PER_GROUP) {
+            uint k = first + gl_LocalInvocationIndex;
+            groupShares[gl_LocalInvocationIndex] = k < count ? lodMorphShare(states[list[bucket.list.z + k]]) : 0.0;
+        }
         barrier();
         if (vertexIndex >= vertexCount) continue;
         for (uint j = 0u; j < CHARACTERS_PER_GROUP && first + j < count; ++j) {
             uint base = j * JOINT_COUNT;
             Skinned s = skinVertex(v, groupBones[base + v.joints.x], groupBones[base + v.joints.y],
                                    groupBones[base + v.joints.z], groupBones[base + v.joints.w]);
+            if (moves && groupShares[j] > 0.0) s = lodMorphed(s, morph, base, groupShares[j]);
             uint slot = vertexBase + (first + j) * vertexCount + vertexIndex;
             positions[slot] = vec4(s.position, 1.0);
             normals[slot] = vec4(s.normal, v.normal.w);

@@ -13,7 +13,11 @@ layout(std430, set = 0, binding = 4) readonly buffer Characters { CharacterRecor
 layout(std430, set = 0, binding = 5) readonly buffer Buckets { BucketRecord buckets[]; };
 layout(std430, set = 0, binding = 6) readonly buffer Frames { BucketFrame frames[]; };
 layout(std430, set = 0, binding = 7) readonly buffer List { uint list[]; };
+layout(std430, set = 0, binding = 8) readonly buffer States { uint states[]; };  // gpu_types.h, FADE_SHIFT
+layout(std430, set = 0, binding = 9) readonly buffer MorphTargets { LodMorphTarget morphTargets[]; };
 #include "skin_texel.glsl.inc"
+#define LOD_MORPH_BONE(i) bones[i]
+#include "lod_morph.glsl.inc"
 
 layout(location = 0) flat in uint inBucket;
 layout(location = 0) out vec4 outPosition;
@@ -26,6 +30,11 @@ void main() {
     SkinVertex v = vertices[tv.vertex];
     Skinned s = skinVertex(v, bones[tv.boneBase + v.joints.x], bones[tv.boneBase + v.joints.y],
                            bones[tv.boneBase + v.joints.z], bones[tv.boneBase + v.joints.w]);
+    // A character fading into its coarser mesh level: the vertices it drops move toward it.
+    uint local = tv.vertex - buckets[inBucket].mesh.w;
+    float share = lodMorphShare(states[tv.character]);
+    if (share > 0.0 && lodMorphMoves(inBucket, local))
+        s = lodMorphed(s, lodMorphOf(buckets[inBucket].mesh.w, local), tv.boneBase, share);
     outPosition = vec4(s.position, 1.0);
     outNormal = vec4(s.normal, v.normal.w);
 }

@@ -254,6 +254,7 @@ TEST_F(GpuTest, ACharacterThatChangesMeshSlotSkinsWithItsOwnPose) {
             const std::vector<std::uint32_t> drawn = drawnCharacters(*context, renderer);
             const std::map<std::uint32_t, test::DrawnCharacter> where = test::readDrawList(*context, renderer);
             const std::vector<gpu::CharacterRecord> records = test::readCharacterRecords(*context, renderer);
+            const std::vector<std::uint32_t> states = test::readShadowLists(*context, renderer).states;
             EXPECT_EQ(drawn.size(), 20u) << "the mesh capacity is full";
             double worst = 0.0;
             std::vector<gpu::BoneRows> bones(soldier.skeleton.jointCount());
@@ -262,8 +263,8 @@ TEST_F(GpuTest, ACharacterThatChangesMeshSlotSkinsWithItsOwnPose) {
                 EXPECT_EQ(records[c].ids.y, slot * blockRows) << "character " << c;
                 if (previousSlot.contains(c) && previousSlot[c] != slot) ++changedSlot;
                 crowd.animateCharacter(c, time, bones);
-                const std::vector<skin::CpuSkinnedVertex> expected = skin::skinOnCpu(soldier, bones);
                 const test::DrawnCharacter& d = where.at(c);
+                const std::vector<skin::CpuSkinnedVertex> expected = test::cpuSkinnedCharacter(soldier, bones, d.lod, states[c]);
                 const test::ReadbackVertices gpu =
                     test::readSkinnedVertices(*context, renderer.method().skinnedVertices(), d.firstVertex, d.vertexCount);
                 for (std::uint32_t v = 0; v < d.vertexCount; ++v)

@@ -8,6 +8,7 @@
 #include "app/crowd_app.h"
 #include "model/procedural_models.h"
 #include "app/crowd_renderer.h"
+#include "crowd/cull_reference.h"
 #include "skin/cpu_skinning.h"
 #include "skin/fragment_skinning.h"
 #include "support/gpu_test.h"
@@ -141,6 +142,99 @@ TEST_F(GpuTest, EveryLevelOfDetailSkinsLikeTheCpuReference) {
     }
 }
 
+namespace {
+
+// The pose-sphere diameters in pixels the renderer's culling saw in its last frame, smallest first.
+std::vector<float> projectedSizes(const test::TestRenderer& renderer) {
+    const gpu::CullUniforms uniforms = renderer.cullUniforms();
+    std::vector<float> sizes;
+    for (const gpu::CharacterRecord& record : renderer.buffers().records())
+        sizes.push_back(crowd::projectedDiameter(crowd::worldSphere(record, renderer.pool().models()[record.ids.x]),
+                                                 uniforms.camera));
+    std::sort(sizes.begin(), sizes.end());
+    return sizes;
+}
+
+// How far the GPU's skinned vertices of fading characters are from the CPU's morph of its own skinning
+// at the share culling gave each, and how far the morph moved the vertices at most.
+struct MorphError {
+    double position = 0.0, normal = 0.0, moved = 0.0;
+    std::uint32_t fading = 0;  // characters with a share strictly between 0 and 1
+};
+
+MorphError compareMorphWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
+                               crowd::Crowd crowd, skin::Method method, const render::CullSettings& cull,
+                               float time) {
+    test::RendererOptions options;
+    options.size = {64, 64};
+    options.method = method;
+    options.shadows = false;
+    options.cull = cull;
+    test::TestRenderer renderer(context, crowd, options);
+    renderer.renderFrame(time);
+    renderer.finish();
+    const std::vector<std::uint32_t> states = test::readShadowLists(context, renderer).states;
+    std::vector<gpu::BoneRows> bones(model.skeleton.jointCount());
+    MorphError error;
+    for (const auto& [c, where] : test::readDrawList(context, renderer)) {
+        const std::uint32_t steps = states[c] >> FADE_SHIFT;
+        if (where.lod + 1 >= LOD_COUNT) continue;
+        if (steps > 0 && steps < FADE_STEPS) ++error.fading;
+        crowd.animateCharacter(c, time, bones);
+        const std::vector<skin::CpuSkinnedVertex> own = skin::skinOnCpu(model, bones);
+        const std::vector<skin::CpuSkinnedVertex> expected = test::cpuSkinnedCharacter(model, bones, where.lod, states[c]);
+        const test::ReadbackVertices gpu =
+            test::readSkinnedVertices(context, renderer.method().skinnedVertices(), where.firstVertex, where.vertexCount);
+        for (std::uint32_t v = 0; v < where.vertexCount; ++v) {
+            error.position = std::max(error.position, glm::length(glm::dvec3(gpu.positions[v]) - expected[v].position));
+            error.normal = std::max(error.normal, glm::length(glm::dvec3(gpu.normals[v]) - expected[v].normal));
+            error.moved = std::max(error.moved, glm::length(expected[v].position - own[v].position));
+        }
+    }
+    return error;
+}
+
+}  // namespace
+
+// Fades between mesh levels are geomorphs made while skinning (shaders/lod_morph.glsl.inc): a
+// character in the band of a level threshold is skinned at the finer level with the vertices the
+// coarser one drops moved by its share toward their targets. Every method that skins into a buffer
+// writes what the CPU reference computes (its own skinning, then model::LodMorphTarget's blend), for
+// characters spread over the band of LOD 0 -> 1 and of LOD 1 -> 2.
+TEST_F(GpuTest, CharactersFadingBetweenLevelsMorphLikeTheCpuReference) {
+    const model::SkinnedModel soldier = test::loadModel("soldier", 1);
+    crowd::Crowd crowd(soldier, mixedCharacters(soldier, 8));
+    render::CullSettings cull;
+    cull.mode = render::CullMode::Off;  // every character drawn
+    cull.hysteresis = 0.5f;             // bands of 0.5 T to 1.5 T
+    test::RendererOptions probeOptions;
+    probeOptions.size = {64, 64};
+    probeOptions.cull = cull;
+    test::TestRenderer probe(*context, crowd, probeOptions);
+    probe.renderFrame(0.75f);
+    probe.finish();
+    const std::vector<float> sizes = projectedSizes(probe);
+    // A threshold in the middle of the sizes, its band wide enough to hold them all.
+    const float middle = 0.5f * (sizes.front() + sizes.back());
+    ASSERT_LT(sizes.back(), 1.4f * middle);
+    ASSERT_GT(sizes.front(), 0.6f * middle);
+    render::CullSettings lod0 = cull, lod1 = cull;
+    lod0.lodThresholds[0] = middle, lod0.lodThresholds[1] = 1e-3f;  // LOD 0 fading into 1
+    lod1.lodThresholds[0] = 1e6f, lod1.lodThresholds[1] = middle;   // LOD 1 fading into 2
+    const std::pair<const char*, render::CullSettings> bands[] = {{"LOD 0 -> 1", lod0}, {"LOD 1 -> 2", lod1}};
+    for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
+        for (const auto& [band, settings] : bands) {
+            const MorphError error = compareMorphWithCpu(*context, soldier, crowd, method, settings, 0.75f);
+            std::printf("%s, %s: %u characters fading, vertices moved up to %.4f m, GPU against CPU %.2e m, normals %.2e\n",
+                        skin::methodName(method), band, error.fading, error.moved, error.position, error.normal);
+            EXPECT_GE(error.fading, 4u) << band;
+            EXPECT_GT(error.moved, 1e-3 * soldier.height()) << band << ": the morph moved nothing";
+            EXPECT_LE(error.position, 1e-5 * soldier.height()) << skin::methodName(method) << " " << band;
+            EXPECT_LE(error.normal, 1e-4) << skin::methodName(method) << " " << band;
+        }
+    }
+}
+
 TEST_F(GpuTest, TiledTargetsRespectTheLimit) {
     const model::SkinnedModel soldier = model::makeSoldier(1);
     crowd::Crowd crowd(soldier, mixedCharacters(soldier, 40));
@@ -208,13 +302,15 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
     scene.clip = "random";
     crowd::Crowd crowd(model, test::buildCharacters(model, scene));
     // One frame: "static" skins only its first frame, so every method shows the same poses there.
-    // Level changes fade only in the methods that skin into a buffer (docs/picture-quality.md, "No
-    // pops"); the vertex-shader methods switch at once, so they are compared with fades off.
+    // Level changes fade only in the methods that skin into a buffer every frame (docs/picture-quality.md,
+    // "No pops"); the vertex-shader methods and the static ceiling switch at once, so they are compared
+    // with fades off.
     const app::Rgba8Image twoPass = renderScene(context, crowd, skin::Method::TwoPass, 1);
     const app::Rgba8Image twoPassNoFades = renderScene(context, crowd, skin::Method::TwoPass, 1, false);
     for (skin::Method method : skin::allMethods()) {
         if (method == skin::Method::TwoPass) continue;
-        const bool fades = method != skin::Method::VertexShader && method != skin::Method::VertexShaderInstanced;
+        const bool fades = method != skin::Method::VertexShader && method != skin::Method::VertexShaderInstanced &&
+                           method != skin::Method::Static;
         const app::Rgba8Image other = renderScene(context, crowd, method, 1, fades);
         const app::Rgba8Image& reference = fades ? twoPass : twoPassNoFades;
         const double matching = test::fractionOfMatchingPixels(other, reference, 2);

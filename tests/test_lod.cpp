@@ -19,6 +19,7 @@
 #include "model/gltf_loader.h"
 #include "model/attach_prop.h"
 #include "model/lod_builder.h"
+#include "model/lod_morph.h"
 #include "model/procedural_models.h"
 #include "skin/cpu_skinning.h"
 #include "support/run_program.h"
@@ -216,6 +217,51 @@ TEST_P(LodOf, BuildingTwiceGivesTheSameLevels) {
 
 // ---- The pose sphere --------------------------------------------------------------------------
 
+// Geomorphs (model/lod_morph.h): every vertex a coarser level drops targets a point of one of that
+// level's triangles, on its own part (body or prop), near it in the bind pose; every other vertex
+// targets itself. The distance is the simplifier's error at that vertex, a small share of the model.
+TEST_P(LodOf, EveryVertexACoarserLevelDropsMorphsOntoThatLevelNearby) {
+    ASSERT_EQ(m().lods.size(), model::kLodLevels);
+    const std::vector<model::LodMorphTarget> targets = model::lodMorphTargets(m(), m().lods);
+    ASSERT_EQ(targets.size(), m().vertices.size());
+    auto part = [&](std::uint32_t v) {
+        const std::uint32_t joint = m().vertices[v].joints.x;
+        return joint < m().skeleton.propOfJoint.size() ? m().skeleton.propOfJoint[joint] : 0u;
+    };
+    Box box;
+    for (const gpu::SkinVertex& v : m().vertices) box.add(glm::dvec3(v.position));
+    double farthest = 0.0, sum = 0.0;
+    std::size_t moving = 0;
+    for (std::size_t l = 0; l + 1 < model::kLodLevels; ++l) {
+        const std::vector<std::uint32_t>& coarse = m().lods[l + 1].indices;
+        std::set<std::array<std::uint32_t, 3>> coarseTriangles;
+        for (std::size_t t = 0; t + 2 < coarse.size(); t += 3) coarseTriangles.insert({coarse[t], coarse[t + 1], coarse[t + 2]});
+        const std::set<std::uint32_t> used = usedVertices(m().lods[l].indices);
+        for (std::uint32_t v = m().lods[l + 1].vertexCount; v < m().lods[l].vertexCount; ++v) {
+            if (!used.count(v)) continue;
+            const model::LodMorphTarget& t = targets[v];
+            ASSERT_TRUE(coarseTriangles.count(t.corners)) << "vertex " << v << " of level " << l;
+            EXPECT_GE(t.weights.x, 0.0f);
+            EXPECT_GE(t.weights.y, 0.0f);
+            EXPECT_LE(t.weights.x + t.weights.y, 1.0f + 1e-6f);
+            EXPECT_EQ(part(t.corners[0]), part(v)) << "vertex " << v << " morphs onto another part";
+            const glm::dvec3 target = (1.0 - t.weights.x - t.weights.y) * glm::dvec3(m().vertices[t.corners[0]].position) +
+                                      double(t.weights.x) * glm::dvec3(m().vertices[t.corners[1]].position) +
+                                      double(t.weights.y) * glm::dvec3(m().vertices[t.corners[2]].position);
+            const double distance = glm::length(target - glm::dvec3(m().vertices[v].position));
+            farthest = std::max(farthest, distance), sum += distance, ++moving;
+        }
+    }
+    for (std::uint32_t v = 0; v < m().lods.back().vertexCount; ++v) {
+        EXPECT_EQ(targets[v].corners, (std::array<std::uint32_t, 3>{v, v, v}));
+        EXPECT_EQ(targets[v].weights, glm::vec2(0.0f));
+    }
+    std::printf("%s: %zu vertices morph, %.4f of the box's diagonal on average, %.4f at most\n", GetParam().name.c_str(),
+                moving, sum / double(std::max<std::size_t>(moving, 1)) / box.diagonal(), farthest / box.diagonal());
+    EXPECT_GT(moving, 0u);
+    EXPECT_LT(farthest, 0.1 * box.diagonal());
+}
+
 TEST_P(LodOf, PoseSphereHoldsEveryVertexAtRandomTimesOfEveryClipButIsNotLoose) {
     const glm::dvec3 center(m().poseSphere);
     const double radius = m().poseSphere.w;
@@ -310,6 +356,24 @@ TEST(LodOfATinyMesh, AMeshWithoutTrianglesHasThreeEmptyLevels) {
     EXPECT_EQ(m.lods[0].vertexCount, 1u);
     for (std::size_t l = 1; l < 3; ++l) EXPECT_EQ(m.lods[l].vertexCount, 0u);
     for (const model::SkinnedModel::Lod& level : m.lods) EXPECT_TRUE(level.indices.empty());
+}
+
+// A square of four corners and a raised centre (a flat pyramid, four triangles) over the square as two
+// triangles: the centre, the one vertex the coarser level drops, morphs straight down onto the
+// diagonal the two share, half way along it, in the first of them (ties go to the first triangle).
+// The coarsest level drops nothing, and the corners stay where they are.
+TEST(LodMorphOfAHandBuiltMesh, TheCentreOfAPyramidMorphsOntoTheSquareBelowIt) {
+    SkinnedModel m = handBuilt({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.2f}},
+                               {0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4});
+    const std::vector<SkinnedModel::Lod> lods = {{m.indices, 5}, {{0, 1, 2, 0, 2, 3}, 4}, {{0, 1, 2, 0, 2, 3}, 4}};
+    const std::vector<model::LodMorphTarget> targets = model::lodMorphTargets(m, lods);
+    ASSERT_EQ(targets.size(), 5u);
+    EXPECT_EQ(targets[4].corners, (std::array<std::uint32_t, 3>{0, 1, 2}));
+    EXPECT_NEAR(targets[4].weights.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(targets[4].weights.y, 0.5f, 1e-6f);
+    for (std::uint32_t v = 0; v < 4; ++v) EXPECT_EQ(targets[v].corners, (std::array<std::uint32_t, 3>{v, v, v}));
+    // Packed as the GPU reads it: the second corner's weight in the low half, as unorm16.
+    EXPECT_EQ(model::packLodMorphTarget(targets[4]), glm::uvec4(0, 1, 2, 0u | (32768u << 16)));
 }
 
 TEST(PoseSphere, OfAStillMeshIsItsBoxsCircumsphereWithTheMargin) {

@@ -173,7 +173,7 @@ typedef struct crowdgpu_renderer_settings {
     bool shadow_lod;           /* casters at a level from their size in the shadow map */
     bool shadow_raster_compute; /* the shadow map's casters rasterized in compute (else hardware) */
     bool impostor_blend;       /* impostors blend views, bands and frames (else the nearest cell) */
-    bool lod_fade;             /* level changes fade over a dithered band (else switch at once) */
+    bool lod_fade;             /* level changes fade over a band: mesh levels morph, impostors dither (else switch at once) */
     bool events;               /* animation events of the characters in view, in the frame's output */
     uint32_t event_capacity;
     uint32_t shadow_cascades;  /* 1 to 4: the shadow map's cascades, split by distance */

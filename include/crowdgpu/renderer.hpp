@@ -114,11 +114,12 @@ struct RendererSettings {
     float lodThresholds[2] = {150.0f, 50.0f};  // pixels of pose-sphere diameter for LOD 0 and 1
     float lodHysteresis = 0.1f;
     // Level changes fade: within lodHysteresis of a threshold (the LOD thresholds and, with impostors,
-    // the impostor threshold) a character is drawn at both levels, each on a complementary screen-space
-    // dither of its pixels, the coarser level's share rising across that band of sizes, so no change
-    // pops (hysteresis is then not needed). With the methods that skin into a buffer or impostors;
-    // the vertex-shader methods do not fade. On the H100 fades cost 5-15 % of a mesh-heavy frame
-    // (docs/picture-quality.md). Off: levels switch at once, with hysteresis.
+    // the impostor threshold) the coarser level's share rises across that band of sizes, so no change
+    // pops (hysteresis is then not needed). Between mesh levels the finer level's shape morphs into the
+    // coarser one as it is skinned (drawn once); into its impostor a character is drawn at both, each on
+    // a complementary screen-space dither of its pixels. With the methods that skin into a buffer
+    // every frame; VertexShader, VertexShaderInstanced and Static do not fade. Fades cost 0.5-3 % of a
+    // mesh-heavy frame on the H200 (docs/picture-quality.md). Off: levels switch at once, with hysteresis.
     bool lodFade = true;
     bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
     float impostorThreshold = 32.0f;
@@ -210,9 +211,10 @@ struct FrameCounts {
 // as uint32 indices, and draw with vkCmdDrawIndexedIndirectCount(draws, 0, drawCount,
 // drawCountOffset, maxDraws, 20). firstInstance of each draw is the character's index. Valid after
 // recordCompute of the frame, for the methods that skin into a buffer (not VertexShader*:
-// `skinned` is false there). With lodFade on, a character within a fade band has no instance in
+// `skinned` is false there). With lodFade on, a character fading into its impostor has no instance in
 // `draws` (the renderer draws it dithered from a list of its own): draw also
 // vkCmdDrawIndexedIndirectCount(draws, fadingDrawsOffset, drawCount, fadingCountOffset, maxDraws, 20).
+// One fading between mesh levels is in `draws`, its vertices already morphed.
 struct FrameOutput {
     bool skinned = false;
     VkBuffer vertices = VK_NULL_HANDLE;
@@ -222,7 +224,7 @@ struct FrameOutput {
     VkBuffer drawCount = VK_NULL_HANDLE;
     VkDeviceSize drawCountOffset = 0;
     std::uint32_t maxDraws = 0;
-    VkDeviceSize fadingDrawsOffset = 0, fadingCountOffset = 0;  // lodFade: the fading characters' draws
+    VkDeviceSize fadingDrawsOffset = 0, fadingCountOffset = 0;  // lodFade: draws of those fading into impostors
     // With events on: the clip events that characters in view fired in (the previous recordCompute's
     // time, this one's] (nothing on the first frame or when time goes back): a GpuEventHeader at byte
     // 0, then header.count GpuEvents from eventsOffset, in no particular order. Null with events off.

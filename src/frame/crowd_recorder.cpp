@@ -288,9 +288,10 @@ gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view, con
 }
 
 bool CrowdRecorder::fadesDrawn() const {
-    // The vertex-shader methods draw from lists the fade partners are not in (one command per
-    // character, one instanced draw per bucket): without partners, no fade.
-    return cull_.lodFade && method_->drawInput() == render::DrawInput::SkinnedVertices;
+    // Fades between mesh levels are morphs made while skinning, and fades into impostors dither a
+    // list of their own: the vertex-shader methods draw from lists without it (one command per
+    // character, one instanced draw per bucket), and the static ceiling skins once, so neither fades.
+    return cull_.lodFade && method_->drawInput() == render::DrawInput::SkinnedVertices && !method_->fixedLayout();
 }
 
 void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& view) {

@@ -138,8 +138,9 @@ struct FrameOutput {
     VkBuffer drawCount = VK_NULL_HANDLE;  // uint32 count of `draws`, at drawCountOffset
     VkDeviceSize drawCountOffset = 0;
     std::uint32_t maxDraws = 0;
-    // With fades on, a fading character's draw above has no instance; its finer level's draw is in
-    // `draws` from fadingDrawsOffset (bytes), counted at fadingCountOffset of `drawCount`.
+    // With fades on, a character fading into its impostor has no instance in the draws above; its
+    // mesh's draw is in `draws` from fadingDrawsOffset (bytes), counted at fadingCountOffset of
+    // `drawCount`. Characters fading between mesh levels are in the draws above, morphed.
     VkDeviceSize fadingDrawsOffset = 0;
     VkDeviceSize fadingCountOffset = 0;
     VkBuffer characters = VK_NULL_HANDLE;  // CharacterRecord per character (firstInstance names it)

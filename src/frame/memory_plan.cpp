@@ -23,8 +23,8 @@ std::uint64_t textureBytes(const model::SkinnedModel& model) {
     return t.width > 0 && t.height > 0 && !t.rgba.empty() ? std::uint64_t{t.width} * t.height * 4 : 0;
 }
 
-// Bind-pose vertices, indices of every LOD, texture coordinates, the model table, textures (a white
-// one for untextured models): render::GeometryPool's buffers.
+// Bind-pose vertices, indices of every LOD, texture coordinates, morph targets between levels, the
+// model table, textures (a white one for untextured models): render::GeometryPool's buffers.
 std::uint64_t geometryBytes(const crowd::Crowd& crowd) {
     std::uint64_t vertices = 0, indices = 0, textures = 4;
     for (const model::SkinnedModel* m : crowd.models()) {
@@ -32,7 +32,7 @@ std::uint64_t geometryBytes(const crowd::Crowd& crowd) {
         for (const model::SkinnedModel::Lod& lod : render::lodsOf(*m)) indices += lod.indices.size();
         textures += textureBytes(*m);
     }
-    return vertices * (sizeof(gpu::SkinVertex) + sizeof(glm::vec2)) + indices * sizeof(std::uint32_t) +
+    return vertices * (sizeof(gpu::SkinVertex) + sizeof(glm::vec2) + sizeof(gpu::LodMorphTarget)) + indices * sizeof(std::uint32_t) +
            crowd.models().size() * sizeof(gpu::ModelRecord) + textures;
 }
 

@@ -10,6 +10,7 @@
 namespace gpu {
 
 static_assert(sizeof(SkinVertex) == 64 && offsetof(SkinVertex, joints) == 32 && offsetof(SkinVertex, weights) == 48);
+static_assert(sizeof(LodMorphTarget) == 16);
 static_assert(sizeof(BoneRows) == 48);
 static_assert(sizeof(ModelRecord) == 80 && offsetof(ModelRecord, info) == 48 && offsetof(ModelRecord, sphere) == 64);
 static_assert(sizeof(CharacterRecord) == 64 && offsetof(CharacterRecord, tint) == 16 && offsetof(CharacterRecord, ids) == 32 &&

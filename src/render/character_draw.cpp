@@ -64,10 +64,8 @@ void CharacterDraw::release() {
             if (pipelines[i]) vkDestroyPipeline(context_.device, pipelines[i], nullptr);
             pipelines[i] = VK_NULL_HANDLE;
         }
-    for (VkPipeline& pipeline : fade_) {
-        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
-        pipeline = VK_NULL_HANDLE;
-    }
+    if (intoImpostor_) vkDestroyPipeline(context_.device, intoImpostor_, nullptr);
+    intoImpostor_ = VK_NULL_HANDLE;
     if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
     layout_ = VK_NULL_HANDLE;
     boneBlock_.reset();
@@ -85,18 +83,17 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     colour.samples = target.samples;
     colour.layout = layout_;
     createPipelines(colour, colour_);
-    // Fades (from skinned vertices only): a fading character's own draw keeps the finer share of its
-    // pixels, its fade partner's draw the coarser share (draw.frag.glsl, kFadeSide). Only they discard:
-    // the colour list holds no instance of a fading character (cull_emit.comp.glsl), so the colour
-    // pipeline above keeps the early depth test for the rest.
-    for (std::uint32_t side = 1; side <= 2; ++side) {
-        gpu::GraphicsPipelineDesc fade = colour;
-        fade.vertexShader = draw_vert_spv;
-        fade.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
-        fade.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-        fade.fragmentConstants = {side};
-        fade_[side - 1] = gpu::createGraphicsPipeline(context_, fade);
-    }
+    // Fades into impostors (from skinned vertices only): the character's mesh keeps the pixels the
+    // impostor's complementary dither leaves (draw.frag.glsl, kDithered). Only it discards: the colour
+    // list holds no instance of such a character (cull_emit.comp.glsl), so the colour pipeline above
+    // keeps the early depth test for the rest. Fades between mesh levels need no pipeline of their
+    // own: those characters are morphed while skinned (shaders/lod_morph.glsl.inc) and drawn whole.
+    gpu::GraphicsPipelineDesc dithered = colour;
+    dithered.vertexShader = draw_vert_spv;
+    dithered.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
+    dithered.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
+    dithered.fragmentConstants = {1u};
+    intoImpostor_ = gpu::createGraphicsPipeline(context_, dithered);
     // The shadow map: depth only, both faces (the light's projection is not mirrored like the camera's),
     // biased by slope so that lit surfaces do not shadow themselves.
     gpu::GraphicsPipelineDesc shadow = colour;
@@ -159,15 +156,11 @@ void CharacterDraw::record(VkCommandBuffer cmd, DrawInput input, const SkinnedVe
                 lists_.totals().buffer, colour ? offsetof(gpu::DrawTotals, drawCount) : offsetof(gpu::DrawTotals, shadowDrawCount),
                 lists_.drawCapacity(), stride);
             if (faded) {
-                // The fading characters (no instance above): their finer level on its share of their pixels,
-                // then their coarser level on the pixels it left.
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[0]);
+                // The characters fading into their impostors (no instance above): their mesh on its share
+                // of their pixels; the impostor draws take the rest.
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, intoImpostor_);
                 vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadingDrawBase()} * stride,
                                               lists_.totals().buffer, offsetof(gpu::DrawTotals, fading),
-                                              lists_.drawCapacity(), stride);
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fade_[1]);
-                vkCmdDrawIndexedIndirectCount(cmd, lists_.draws().buffer, VkDeviceSize{lists_.fadeDrawBase()} * stride,
-                                              lists_.totals().buffer, offsetof(gpu::DrawTotals, fadeDrawCount),
                                               lists_.drawCapacity(), stride);
             }
             break;

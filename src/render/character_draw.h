@@ -49,7 +49,8 @@ public:
     enum class Target { Colour, ShadowMap };
     // Records the characters' draws inside a rendering pass whose scene set is `sceneSet` (for the
     // shadow map: the scene set seen from the light). `fades` (colour pass, skinned vertices): the
-    // culling wrote fades (gpu_types.h, FADE_SHIFT), so fading characters are drawn dithered at both levels.
+    // culling wrote fades (gpu_types.h, FADE_SHIFT), so characters fading into their impostors are
+    // drawn dithered from their own list (those fading between mesh levels were morphed while skinned).
     void record(VkCommandBuffer cmd, DrawInput input, const SkinnedVertices& vertices, VkDescriptorSet sceneSet,
                 const ScenePush& push, Target target = Target::Colour, bool fades = false) const;
 
@@ -72,7 +73,7 @@ private:
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline colour_[3] = {};  // by DrawInput
     VkPipeline shadow_[3] = {};
-    VkPipeline fade_[2] = {};    // skinned vertices, colour: the finer level's share, the coarser's
+    VkPipeline intoImpostor_ = VK_NULL_HANDLE;  // skinned vertices, colour: a mesh fading into its impostor, dithered
 };
 
 }  // namespace render

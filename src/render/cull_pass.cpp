@@ -78,7 +78,7 @@ struct EmitPush {
     std::uint32_t characterDraws;
     std::uint32_t shadowDrawBase;
     std::uint32_t slotBoneRows;
-    std::uint32_t fadeDrawBase;
+    std::uint32_t fadingDrawBase;
 };
 
 // The per-character draws' binding in the cull passes' set (cull_emit.comp.glsl).
@@ -176,7 +176,7 @@ void CullPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const gpu::C
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 1, &dynamicOffset);
     // Bone blocks per mesh slot: the emit pass gives each listed character its slot's block.
     const EmitPush push{fixedLayout ? 1u : 0u, characterDraws ? 1u : 0u, lists_.drawCapacity(), crowd_.slotBoneRows(),
-                        lists_.fadeDrawBase()};
+                        lists_.fadingDrawBase()};
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     if (mode != CullMode::Cpu) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_);

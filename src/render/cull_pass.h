@@ -40,10 +40,12 @@ struct CullSettings {
     float lodThresholds[2] = {150.0f, 50.0f};
     // A character keeps its level until its size passes a threshold by this fraction of it.
     float hysteresis = 0.1f;
-    // Fades (docs/picture-quality.md, "No pops"): within that fraction of a threshold, a character is
-    // drawn at both levels with complementary screen-space dither masks, the coarser's share rising
-    // linearly across the band, instead of keeping its level by hysteresis. Only where both levels
-    // come from skinned vertices or impostors: the recorder turns it off for the vertex-shader methods.
+    // Fades (docs/picture-quality.md, "No pops"): within that fraction of a threshold, the coarser
+    // level's share rises linearly across the band instead of the level being kept by hysteresis: a
+    // character fading between mesh levels is skinned at the finer one and morphed toward the coarser
+    // (shaders/lod_morph.glsl.inc), one fading into its impostor is drawn at both with complementary
+    // screen-space dither masks. Only with the methods that skin into a buffer every frame: the
+    // recorder turns it off for the vertex-shader methods and the static ceiling.
     bool lodFade = true;
     // The impostor level (with LOD on): below impostorThreshold pixels a character is drawn as an
     // impostor (render/impostor_atlas.h). Must be below lodThresholds[1].

@@ -60,13 +60,13 @@ std::uint64_t DrawLists::bytesFor(std::uint64_t characters, std::uint32_t bucket
     // Per character: the LOD state, the shadow state and two impostor list entries (in view, casting),
     // and for the vs baseline its two draw commands (colour, shadow; else one command in all); per
     // mesh-level character (all, without a cap): visible-list and shadow-list entries (one each per
-    // LOD) and four draw commands (colour, shadow, fade partner, fading colour); with a cap, the cut's
+    // LOD) and three draw commands (colour, shadow, fading into its impostor); with a cap, the cut's
     // histograms and per-character lists.
     const std::uint64_t meshLevel = meshCapacity > 0 ? std::min<std::uint64_t>(characters, meshCapacity) : characters;
     const std::uint64_t perCharacterDraws =
         characterDraws ? 2 * std::max<std::uint64_t>(characters, 1) : 1;
     return perCharacterDraws * sizeof(gpu::DrawIndexedCommand) + characters * (4 + 4 + 2 * 4) +
-           meshLevel * (2 * LOD_COUNT * 4 + 4 * sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
+           meshLevel * (2 * LOD_COUNT * 4 + 3 * sizeof(gpu::DrawIndexedCommand)) + sizeof(gpu::ImpostorFrame) +
            buckets * (sizeof(gpu::BucketRecord) + sizeof(gpu::BucketFrame) + 2 * sizeof(gpu::DrawIndexedCommand) + 16) +
            meshCutSizes(characters, meshCapacity).total();
 }
@@ -96,8 +96,8 @@ DrawLists::DrawLists(const gpu::VulkanContext& context, const GeometryPool& pool
         // Each of these holds the colour pass's entries, then the shadow pass's.
         visible_ = gpu::createBuffer(context, std::max<VkDeviceSize>(2 * listed, 1) * 4, filled, device,
                                      "visible and shadow lists");
-        draws_ = gpu::createBuffer(context, 4 * std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect,
-                                   device, "draw commands (colour, shadow, fade partners, fading)");
+        draws_ = gpu::createBuffer(context, 3 * std::max(drawCapacity_, 1u) * sizeof(gpu::DrawIndexedCommand), indirect,
+                                   device, "draw commands (colour, shadow, fading into impostors)");
         characterDraws_ = createCharacterDraws(characterDraws);
         characterDrawsOn_ = characterDraws;
         bucketDraws_ = gpu::createBuffer(context, 2 * b * sizeof(gpu::DrawIndexedCommand), indirect, device,

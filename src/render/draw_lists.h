@@ -84,8 +84,8 @@ public:
     const gpu::Buffer& visible() const { return visible_; }
     std::uint32_t shadowListBase() const { return shadowListBase_; }
     // The compacted draws: the colour pass's, then from drawCapacity() the shadow pass's, then from
-    // fadeDrawBase() the fade partners' (a fading character's coarser mesh level), then from
-    // fadingDrawBase() the fading characters' colour draws again (their finer level, dithered).
+    // fadingDrawBase() the colour draws of the characters fading into their impostors (their last
+    // mesh level, dithered; they have no instance in the colour pass's).
     const gpu::Buffer& draws() const { return draws_; }
     // One per character slot: the colour pass's, then from characterCount() the shadow pass's (vs only:
     // one unused command otherwise).
@@ -107,10 +107,9 @@ public:
     const gpu::Buffer& meshBoundary() const { return meshBoundary_; }
     // The most mesh-level characters a frame draws: the draw list's length.
     std::uint32_t drawCapacity() const { return drawCapacity_; }
-    // Where the fade partners' draws start in draws() (after the shadow pass's; as many at most).
-    std::uint32_t fadeDrawBase() const { return 2 * drawCapacity_; }
-    // Where the fading characters' own colour draws start (after the partners'; as many at most).
-    std::uint32_t fadingDrawBase() const { return 3 * drawCapacity_; }
+    // Where the draws of the characters fading into impostors start in draws() (after the shadow
+    // pass's; as many at most).
+    std::uint32_t fadingDrawBase() const { return 2 * drawCapacity_; }
     std::uint32_t meshCapacity() const { return meshCapacity_; }
     const gpu::Buffer& readback(std::uint32_t frameSlot) const { return readback_[frameSlot]; }
     // Where the CPU path writes a frame's counts and lists before they are copied to the GPU.

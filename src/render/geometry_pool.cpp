@@ -5,6 +5,7 @@
 #include "crowd/pose_bounds.h"
 #include "gpu/vulkan_context.h"
 #include "gpu/vulkan_error.h"
+#include "model/lod_morph.h"
 
 namespace render {
 
@@ -24,6 +25,7 @@ struct PoolData {
     std::vector<gpu::SkinVertex> vertices;
     std::vector<std::uint32_t> indices;
     std::vector<glm::vec2> uvs;
+    std::vector<gpu::LodMorphTarget> morphs;
 };
 
 void appendModel(const model::SkinnedModel& model, std::uint32_t materialBase, PoolData& data,
@@ -38,6 +40,9 @@ void appendModel(const model::SkinnedModel& model, std::uint32_t materialBase, P
     uvs.resize(model.vertices.size(), glm::vec2(0.0f));
     data.uvs.insert(data.uvs.end(), uvs.begin(), uvs.end());
     const std::vector<model::SkinnedModel::Lod> lods = lodsOf(model);
+    // Corners stay model-relative, as indices do: the shaders add the model's first vertex.
+    for (const model::LodMorphTarget& target : model::lodMorphTargets(model, lods))
+        data.morphs.push_back({model::packLodMorphTarget(target)});
     for (int l = 0; l < LOD_COUNT; ++l) {
         // Indices stay model-relative: draws add the model's first vertex (bind pose) or the
         // character's first skinned vertex as vertexOffset.
@@ -79,6 +84,8 @@ GeometryPool::GeometryPool(const gpu::VulkanContext& context, std::span<const mo
                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
         uvs_ = gpu::createBufferWithData(context, std::as_bytes(std::span(data.uvs)),
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "texture coordinates");
+        lodMorphs_ = gpu::createBufferWithData(context, std::as_bytes(std::span(data.morphs)),
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "level-of-detail morph targets");
         modelTable_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),
                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "model table");
     } catch (...) {
@@ -91,13 +98,14 @@ GeometryPool::~GeometryPool() { release(); }
 
 void GeometryPool::release() {
     gpu::destroyBuffer(context_, modelTable_);
+    gpu::destroyBuffer(context_, lodMorphs_);
     gpu::destroyBuffer(context_, uvs_);
     gpu::destroyBuffer(context_, indices_);
     gpu::destroyBuffer(context_, bindVertices_);
 }
 
 VkDeviceSize GeometryPool::bytes() const {
-    return bindVertices_.size + indices_.size + uvs_.size + modelTable_.size + textures_.bytes();
+    return bindVertices_.size + indices_.size + uvs_.size + lodMorphs_.size + modelTable_.size + textures_.bytes();
 }
 
 }  // namespace render

@@ -1,7 +1,7 @@
 #pragma once
 // Every model of a crowd on the GPU, pooled (niagara's shape): one bind-pose vertex buffer, one index
-// buffer holding every model's every level of detail, one texture-coordinate buffer, one material
-// palette, and a model table (gpu::ModelRecord) that culling, skinning and drawing read.
+// buffer holding every model's every level of detail, one texture-coordinate buffer, the vertices'
+// morph targets between levels, one material palette, and a model table (gpu::ModelRecord) that culling, skinning and drawing read.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -30,6 +30,9 @@ public:
     const gpu::Buffer& bindVertices() const { return bindVertices_; }
     const gpu::Buffer& indices() const { return indices_; }
     const gpu::Buffer& textureCoordinates() const { return uvs_; }
+    // gpu::LodMorphTarget per bind-pose vertex (model/lod_morph.h): read by skinning while a character
+    // fades between mesh levels.
+    const gpu::Buffer& lodMorphTargets() const { return lodMorphs_; }
     const gpu::Buffer& modelTable() const { return modelTable_; }
     const MaterialTextures& textures() const { return textures_; }
     // The model table as the GPU has it.
@@ -56,6 +59,7 @@ private:
     gpu::Buffer bindVertices_;
     gpu::Buffer indices_;
     gpu::Buffer uvs_;
+    gpu::Buffer lodMorphs_;
     gpu::Buffer modelTable_;
 };
 

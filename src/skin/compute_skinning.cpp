@@ -49,7 +49,9 @@ ComputeSkinning::ComputeSkinning(const MethodSetup& setup, Every every)
                                                {storage, setup.crowd.characters().buffer},
                                                {storage, lists_.bucketRecords().buffer},
                                                {storage, lists_.bucketFrames().buffer},
-                                               {storage, list}};
+                                               {storage, list},
+                                               {storage, lists_.shadowStates().buffer},
+                                               {storage, setup.pool.lodMorphTargets().buffer}};
         descriptors_ = std::make_unique<gpu::DescriptorBundle>(context_, VK_SHADER_STAGE_COMPUTE_BIT, bindings);
         const VkDescriptorSetLayout setLayout = descriptors_->layout();
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::SkinPassParams)};

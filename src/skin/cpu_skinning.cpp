@@ -44,6 +44,24 @@ std::vector<CpuSkinnedVertex> skinOnCpu(const model::SkinnedModel& model, std::s
     return out;
 }
 
+std::vector<CpuSkinnedVertex> morphOnCpu(const std::vector<CpuSkinnedVertex>& skinned,
+                                         const std::vector<model::LodMorphTarget>& targets, std::uint32_t firstMoving,
+                                         double share) {
+    std::vector<CpuSkinnedVertex> out = skinned;
+    for (std::size_t v = firstMoving; v < skinned.size(); ++v) {
+        const model::LodMorphTarget& t = targets[v];
+        const double w[3] = {1.0 - double(t.weights.x) - double(t.weights.y), t.weights.x, t.weights.y};
+        glm::dvec3 position(0.0), normal(0.0);
+        for (int k = 0; k < 3; ++k) {
+            position += w[k] * skinned[t.corners[k]].position;
+            normal += w[k] * skinned[t.corners[k]].normal;
+        }
+        out[v].position = skinned[v].position + share * (position - skinned[v].position);
+        out[v].normal = unitNormal(skinned[v].normal + share * (normal - skinned[v].normal), skinned[v].normal);
+    }
+    return out;
+}
+
 std::vector<CpuSkinnedVertex> poseOnCpu(const model::SkinnedModel& model, std::uint32_t clip, float time) {
     const anim::Skeleton& skeleton = model.skeleton;
     std::vector<anim::Transform> locals(skeleton.restPose);

@@ -30,7 +30,9 @@ FragmentSkinPass::FragmentSkinPass(const MethodSetup& setup, const SkinnedVertex
                                                {storage, setup.crowd.characters().buffer},
                                                {storage, setup.lists.bucketRecords().buffer},
                                                {storage, setup.lists.bucketFrames().buffer},
-                                               {storage, setup.lists.visible().buffer}};
+                                               {storage, setup.lists.visible().buffer},
+                                               {storage, setup.lists.shadowStates().buffer},
+                                               {storage, setup.pool.lodMorphTargets().buffer}};
         descriptors_ = std::make_unique<gpu::DescriptorBundle>(
             context_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, bindings);
         const VkDescriptorSetLayout setLayout = descriptors_->layout();

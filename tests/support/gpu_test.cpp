@@ -11,7 +11,9 @@
 #include "app/crowd_app.h"
 #include "gpu/buffer.h"
 #include "gpu/one_shot_commands.h"
+#include "model/lod_morph.h"
 #include "render/camera.h"
+#include "render/geometry_pool.h"
 #include "render/frame_view.h"
 
 namespace test {
@@ -167,6 +169,17 @@ crowdgpu::Method publicMethod(skin::Method method) {
 
 model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed) {
     return app::loadModel(name, seed).data()->model;
+}
+
+std::vector<skin::CpuSkinnedVertex> cpuSkinnedCharacter(const model::SkinnedModel& model,
+                                                        std::span<const gpu::BoneRows> bones, std::uint32_t lod,
+                                                        std::uint32_t state) {
+    const std::vector<skin::CpuSkinnedVertex> own = skin::skinOnCpu(model, bones);
+    const std::uint32_t steps = state >> FADE_SHIFT;
+    if (steps == 0 || lod + 1 >= LOD_COUNT) return own;
+    const std::vector<model::SkinnedModel::Lod> lods = render::lodsOf(model);
+    return skin::morphOnCpu(own, model::lodMorphTargets(model, lods), lods[lod + 1].vertexCount,
+                            static_cast<double>(steps) / FADE_STEPS);
 }
 
 ReadbackVertices readSkinnedVertices(const gpu::VulkanContext& context, const render::SkinnedVertices& vertices,
