@@ -45,14 +45,20 @@ struct SkinError {
     double normal = 0.0;
 };
 
-SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
-                         crowd::Crowd crowd, std::uint32_t maxTargetDimension, skin::Method method,
-                         const render::CullSettings& cull = fullDetail()) {
+// A 64x64 frame skinned by `method` under culling settings `cull`.
+test::RendererOptions skinningOptions(skin::Method method, const render::CullSettings& cull) {
     test::RendererOptions options;
     options.size = {64, 64};
     options.method = method;
-    options.maxTargetDimension = maxTargetDimension;
     options.cull = cull;
+    return options;
+}
+
+SkinError compareWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
+                         crowd::Crowd crowd, std::uint32_t maxTargetDimension, skin::Method method,
+                         const render::CullSettings& cull = fullDetail()) {
+    test::RendererOptions options = skinningOptions(method, cull);
+    options.maxTargetDimension = maxTargetDimension;
     test::TestRenderer renderer(context, crowd, options);
     const float time = 0.75f;
     renderer.renderFrame(time);
@@ -165,11 +171,8 @@ struct MorphError {
 MorphError compareMorphWithCpu(const gpu::VulkanContext& context, const model::SkinnedModel& model,
                                crowd::Crowd crowd, skin::Method method, const render::CullSettings& cull,
                                float time) {
-    test::RendererOptions options;
-    options.size = {64, 64};
-    options.method = method;
+    test::RendererOptions options = skinningOptions(method, cull);
     options.shadows = false;
-    options.cull = cull;
     test::TestRenderer renderer(context, crowd, options);
     renderer.renderFrame(time);
     renderer.finish();
@@ -207,10 +210,7 @@ TEST_F(GpuTest, CharactersFadingBetweenLevelsMorphLikeTheCpuReference) {
     render::CullSettings cull;
     cull.mode = render::CullMode::Off;  // every character drawn
     cull.hysteresis = 0.5f;             // bands of 0.5 T to 1.5 T
-    test::RendererOptions probeOptions;
-    probeOptions.size = {64, 64};
-    probeOptions.cull = cull;
-    test::TestRenderer probe(*context, crowd, probeOptions);
+    test::TestRenderer probe(*context, crowd, skinningOptions(skin::Method::Compute, cull));
     probe.renderFrame(0.75f);
     probe.finish();
     const std::vector<float> sizes = projectedSizes(probe);
