@@ -68,3 +68,7 @@ csv_value() {
     NR == 1 { n = fields($0, head); for (i = 1; i <= n; i++) if (head[i] == want) column = i; next }
     NR == 2 { fields($0, row); if (column) print row[column]; exit }' "$1" 2>/dev/null
 }
+
+# The program $2 of build $1, for the scripts that compare two builds: before's in $bin, after's in
+# $after.
+exe() { [[ $1 == before ]] && echo "$bin/$2" || echo "$after/$2"; }

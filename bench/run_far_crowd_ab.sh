@@ -27,8 +27,6 @@ res=/tmp/far-crowd-ab
 out=${OUT:-/tmp/out}
 begin_run run_far_crowd_ab
 failures=0
-# The program $2 of build $1 (before or after).
-exe() { [[ $1 == before ]] && echo "$bin/$2" || echo "$after/$2"; }
 
 if [[ $parts == *cost* ]]; then
   for round in $(seq "$rounds"); do

@@ -32,8 +32,6 @@ res=/tmp/lod-morph-ab
 out=${OUT:-/tmp/out}
 begin_run run_lod_morph_ab
 failures=0
-# The program $2 of build $1 (before or after).
-exe() { [[ $1 == before ]] && echo "$bin/$2" || echo "$after/$2"; }
 
 # name: scene flags | method | setting flags
 configs=(
