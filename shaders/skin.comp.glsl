@@ -6,12 +6,15 @@
 // bones are staged once in shared memory, and each thread loads its bind-pose vertex once and reuses
 // it for every character, so device memory sees little more than the output writes. A character
 // fading into its coarser mesh level has the vertices that level drops morphed toward it
-// (lod_morph.glsl.inc): their targets are read once per thread too, and skinned only for such characters.
+// (lod_morph.glsl.inc): the group's shares are staged with its bones.
 #include "gpu_types.h"
 #include "skinning.glsl.inc"
 
 layout(constant_id = 0) const uint CHARACTERS_PER_GROUP = 8;
 layout(constant_id = 1) const uint JOINT_COUNT = 32;  // of this pipeline's model
+// 1: this pipeline skins buckets of a level with a coarser mesh level, whose characters may morph
+// into it; 0 (the last level, the static ceiling): none does, and the morph's code is left out.
+layout(constant_id = 2) const uint MORPHS = 1;
 layout(local_size_x = CULL_WORKGROUP_SIZE) in;
 
 layout(push_constant) uniform Push { SkinPassParams params; };
@@ -42,9 +45,7 @@ void main() {
     uint vertexIndex = gl_WorkGroupID.y * CULL_WORKGROUP_SIZE + gl_LocalInvocationIndex;
     SkinVertex v;
     if (vertexIndex < vertexCount) v = vertices[bucket.mesh.w + vertexIndex];
-    bool moves = vertexIndex < vertexCount && lodMorphMoves(params.bucket.x, vertexIndex);
-    LodMorph morph;
-    if (moves) morph = lodMorphOf(bucket.mesh.w, vertexIndex);
+    bool moves = MORPHS != 0u && vertexIndex < vertexCount && lodMorphMoves(params.bucket.x, vertexIndex);
 
     // A grid-stride loop over groups of characters: a bucket larger than one dispatch's x limit
     // takes several turns. The loop bound is the same for the whole workgroup, as barrier() needs.
@@ -55,7 +56,7 @@ void main() {
             uint k = first + i / JOINT_COUNT;
             if (k < count) groupBones[i] = bones[characters[list[bucket.list.z + k]].ids.y + i % JOINT_COUNT];
         }
-        if (gl_LocalInvocationIndex < CHARACTERS_PER_GROUP) {
+        if (MORPHS != 0u && gl_LocalInvocationIndex < CHARACTERS_PER_GROUP) {
             uint k = first + gl_LocalInvocationIndex;
             groupShares[gl_LocalInvocationIndex] = k < count ? lodMorphShare(states[list[bucket.list.z + k]]) : 0.0;
         }
@@ -65,7 +66,8 @@ void main() {
             uint base = j * JOINT_COUNT;
             Skinned s = skinVertex(v, groupBones[base + v.joints.x], groupBones[base + v.joints.y],
                                    groupBones[base + v.joints.z], groupBones[base + v.joints.w]);
-            if (moves && groupShares[j] > 0.0) s = lodMorphed(s, morph, base, groupShares[j]);
+            // Few characters fade: their targets are read when needed, not held by every thread.
+            if (moves && groupShares[j] > 0.0) s = lodMorphed(s, lodMorphOf(bucket.mesh.w, vertexIndex), base, groupShares[j]);
             uint slot = vertexBase + (first + j) * vertexCount + vertexIndex;
             positions[slot] = vec4(s.position, 1.0);
             normals[slot] = vec4(s.normal, v.normal.w);

@@ -18,6 +18,9 @@ layout(std430, set = 0, binding = 9) readonly buffer MorphTargets { LodMorphTarg
 #include "skin_texel.glsl.inc"
 #define LOD_MORPH_BONE(i) bones[i]
 #include "lod_morph.glsl.inc"
+// 1: this pipeline draws the rectangles of buckets whose characters may morph into a coarser mesh
+// level; 0 (the last level): the morph's code is left out.
+layout(constant_id = 0) const uint kMorphs = 1u;
 
 layout(location = 0) flat in uint inBucket;
 layout(location = 0) out vec4 outPosition;
@@ -32,9 +35,10 @@ void main() {
                            bones[tv.boneBase + v.joints.z], bones[tv.boneBase + v.joints.w]);
     // A character fading into its coarser mesh level: the vertices it drops move toward it.
     uint local = tv.vertex - buckets[inBucket].mesh.w;
-    float share = lodMorphShare(states[tv.character]);
-    if (share > 0.0 && lodMorphMoves(inBucket, local))
-        s = lodMorphed(s, lodMorphOf(buckets[inBucket].mesh.w, local), tv.boneBase, share);
+    if (kMorphs != 0u && lodMorphMoves(inBucket, local)) {
+        float share = lodMorphShare(states[tv.character]);
+        if (share > 0.0) s = lodMorphed(s, lodMorphOf(buckets[inBucket].mesh.w, local), tv.boneBase, share);
+    }
     outPosition = vec4(s.position, 1.0);
     outNormal = vec4(s.normal, v.normal.w);
 }

@@ -56,10 +56,14 @@ ComputeSkinning::ComputeSkinning(const MethodSetup& setup, Every every)
         const VkDescriptorSetLayout setLayout = descriptors_->layout();
         const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::SkinPassParams)};
         pipelineLayout_ = gpu::createPipelineLayout(context_, {&setLayout, 1}, {&push, 1});
-        for (const gpu::ModelRecord& model : setup.pool.models()) {
-            const std::uint32_t constants[2] = {render::skinningCharactersPerGroup(context_, model.info.y), model.info.y};
-            pipelines_.push_back(gpu::createComputePipeline(context_, skin_comp_spv, pipelineLayout_, constants));
-        }
+        // Per model, a pipeline for its last level (no coarser mesh level to morph into) and one for
+        // the others (shaders/skin.comp.glsl, MORPHS).
+        for (const gpu::ModelRecord& model : setup.pool.models())
+            for (std::uint32_t morphs = 0; morphs < 2; ++morphs) {
+                const std::uint32_t constants[3] = {render::skinningCharactersPerGroup(context_, model.info.y), model.info.y,
+                                                    morphs};
+                pipelines_.push_back(gpu::createComputePipeline(context_, skin_comp_spv, pipelineLayout_, constants));
+            }
     } catch (...) {
         release();
         throw;
@@ -84,7 +88,8 @@ void ComputeSkinning::recordDispatches(VkCommandBuffer cmd) {
     const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
     for (std::uint32_t b = 0; b < lists_.bucketCount(); ++b) {
         const gpu::BucketRecord& bucket = lists_.buckets()[b];
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[bucket.list.x]);
+        const bool morphs = !once() && bucket.list.y + 1 < LOD_COUNT;  // the static ceiling never fades
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[2 * bucket.list.x + (morphs ? 1 : 0)]);
         gpu::SkinPassParams params{};
         params.bucket = glm::uvec4(b, once() ? 1u : 0u, 0u, 0u);
         vkCmdPushConstants(cmd, pipelineLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof params, &params);

@@ -40,7 +40,9 @@ private:
     gpu::Buffer everyCharacter_;  // the fixed layout's list: every character of each bucket's model
     std::unique_ptr<gpu::DescriptorBundle> descriptors_;
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
-    std::vector<VkPipeline> pipelines_;  // per model: its joint count and characters per group
+    // Per model (its joint count and characters per group), two: [2m] for its last level, [2m + 1]
+    // with the morph into a coarser level (shaders/skin.comp.glsl, MORPHS).
+    std::vector<VkPipeline> pipelines_;
 };
 
 }  // namespace skin

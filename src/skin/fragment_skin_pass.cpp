@@ -45,7 +45,13 @@ FragmentSkinPass::FragmentSkinPass(const MethodSetup& setup, const SkinnedVertex
         desc.colorFormats = std::move(colorFormats);
         desc.layout = pipelineLayout_;
         desc.cullMode = VK_CULL_MODE_NONE;
-        pipeline_ = gpu::createGraphicsPipeline(context_, desc);
+        // One pipeline for the buckets of each model's last level (nothing to morph into), one for the
+        // others (skin_fragment.frag.glsl, kMorphs).
+        for (std::uint32_t morphs = 0; morphs < 2; ++morphs) {
+            desc.fragmentConstants = {morphs};
+            pipelines_[morphs] = gpu::createGraphicsPipeline(context_, desc);
+        }
+        for (const gpu::BucketRecord& bucket : setup.lists.buckets()) bucketMorphs_.push_back(bucket.list.y + 1 < LOD_COUNT);
     } catch (...) {
         release();
         throw;
@@ -55,14 +61,16 @@ FragmentSkinPass::FragmentSkinPass(const MethodSetup& setup, const SkinnedVertex
 FragmentSkinPass::~FragmentSkinPass() { release(); }
 
 void FragmentSkinPass::release() {
-    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
+    for (VkPipeline& pipeline : pipelines_) {
+        if (pipeline) vkDestroyPipeline(context_.device, pipeline, nullptr);
+        pipeline = VK_NULL_HANDLE;
+    }
     if (pipelineLayout_) vkDestroyPipelineLayout(context_.device, pipelineLayout_, nullptr);
-    pipeline_ = VK_NULL_HANDLE, pipelineLayout_ = VK_NULL_HANDLE;
+    pipelineLayout_ = VK_NULL_HANDLE;
     descriptors_.reset();
 }
 
 void FragmentSkinPass::recordTile(VkCommandBuffer cmd, std::uint32_t tile) const {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     const VkDescriptorSet set = descriptors_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
     const VkExtent2D extent = layout_.tileExtent(tile);
@@ -71,7 +79,14 @@ void FragmentSkinPass::recordTile(VkCommandBuffer cmd, std::uint32_t tile) const
     params.target = glm::uvec4(layout_.width, layout_.firstRow(tile), extent.height, 0u);
     vkCmdPushConstants(cmd, pipelineLayout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof params,
                        &params);
-    vkCmdDraw(cmd, 6, bucketCount_, 0, 0);
+    // A bucket's rectangle a draw (instance b is bucket b), each with its level's pipeline (the same
+    // layout: the set and push constants stay bound).
+    VkPipeline bound = VK_NULL_HANDLE;
+    for (std::uint32_t b = 0; b < bucketCount_; ++b) {
+        const VkPipeline pipeline = pipelines_[bucketMorphs_[b] ? 1 : 0];
+        if (pipeline != bound) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound = pipeline);
+        vkCmdDraw(cmd, 6, 1, 0, b);
+    }
 }
 
 }  // namespace skin

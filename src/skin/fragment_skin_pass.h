@@ -4,6 +4,7 @@
 // fragments go: RGBA32F attachments then a copy ("two-pass"), or storage writes ("two-pass-direct").
 #include <memory>
 #include <span>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -23,7 +24,8 @@ public:
     FragmentSkinPass& operator=(const FragmentSkinPass&) = delete;
 
     const SkinTargetLayout& layout() const { return layout_; }
-    // Inside a rendering of tile `tile`'s extent: every bucket's rectangle, one instance each.
+    // Inside a rendering of tile `tile`'s extent: every bucket's rectangle, a draw each (its instance
+    // index the bucket), by the pipeline with or without the morph its level needs.
     void recordTile(VkCommandBuffer cmd, std::uint32_t tile) const;
 
 private:
@@ -34,7 +36,8 @@ private:
     SkinTargetLayout layout_;
     std::unique_ptr<gpu::DescriptorBundle> descriptors_;
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipeline pipelines_[2] = {};    // [1]: with the morph into a coarser level (shaders/lod_morph.glsl.inc)
+    std::vector<bool> bucketMorphs_;  // per bucket: its level has a coarser mesh level
 };
 
 }  // namespace skin
