@@ -7,6 +7,8 @@
 #    pass, GPU total, and the characters drawn at each level.
 #    With CONFIGS=wide instead: cavalry (about 10,000 riders), stress 250,000 inside with every one a
 #    mesh, stress 1,000,000 inside with impostors, and paper-fig4 with a 5 % band (--lod-hysteresis 0.05).
+#    With CONFIGS=mill: 1,000,000 milling soldiers with impostors inside the crowd (from 20 s) and from
+#    above (from 30 s), for issue 18's p95 (run with FRAMES=600 WARMUP=60, as bench/run_planning.sh).
 # 2. Pictures (PARTS has "pictures"): paper-fig4's 60th frame from each build with fades on and off,
 #    compared by image-psnr; the PNGs land in $OUT.
 # Writes $OUT/lod-morph-ab.tgz (every run's output, CSV, commands and summary).
@@ -15,7 +17,7 @@
 # with their shared libraries) in BEFORE (.devbin/before) and AFTER's in AFTER (.devbin/after).
 #   on the H100 or H200:  bash bench/run_lod_morph_ab.sh
 #   here on lavapipe:     DEVICE= FRAMES=5 WARMUP=1 SIZE=480x270 STRESS_COUNT=8000 BEFORE=... AFTER=build bash bench/run_lod_morph_ab.sh
-# PARTS ("cost pictures"), CONFIGS ("paper" or "wide"), ROUNDS (2), FRAMES (200), WARMUP (20), SIZE (1920x1080), STRESS_COUNT
+# PARTS ("cost pictures"), CONFIGS ("paper", "wide" or "mill"), ROUNDS (2), FRAMES (200), WARMUP (20), SIZE (1920x1080), STRESS_COUNT
 # (100000), DEVICE (NVIDIA): part of the device's name, empty for the first device.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
@@ -49,6 +51,11 @@ if [[ ${CONFIGS:-paper} == wide ]]; then
     "stress250k:--scene stress --counts 250000 --start 20 --impostors off:compute:"
     "million:--scene stress --counts 1000000 --start 20 --impostors on:compute:"
     "fig4-band5:--scene paper-fig4:compute:--lod-hysteresis 0.05"
+  )
+elif [[ ${CONFIGS:-paper} == mill ]]; then
+  configs=(
+    "mill-inside:--scene stress --counts 1000000 --behaviour mill --start 20 --impostors on:compute:"
+    "mill-above:--scene stress --counts 1000000 --behaviour mill --start 30 --impostors on:compute:"
   )
 fi
 
