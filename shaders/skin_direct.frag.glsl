@@ -33,11 +33,7 @@ void main() {
     Skinned s = skinVertex(v, bones[tv.boneBase + v.joints.x], bones[tv.boneBase + v.joints.y],
                            bones[tv.boneBase + v.joints.z], bones[tv.boneBase + v.joints.w]);
     // A character fading into its coarser mesh level: the vertices it drops move toward it.
-    uint local = tv.vertex - buckets[inBucket].mesh.w;
-    if (kMorphs != 0u && lodMorphMoves(inBucket, local)) {
-        float share = lodMorphShare(states[tv.character]);
-        if (share > 0.0) s = lodMorphed(s, lodMorphOf(buckets[inBucket].mesh.w, local), tv.boneBase, share);
-    }
+    if (kMorphs != 0u) s = lodMorphedVertex(s, inBucket, tv.vertex, tv.character, tv.boneBase);
     // The same slot the image copy would put it in.
     positions[tv.slot] = vec4(s.position, 1.0);
     normals[tv.slot] = vec4(s.normal, v.normal.w);

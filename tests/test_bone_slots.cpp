@@ -241,6 +241,7 @@ TEST_F(GpuTest, ACharacterThatChangesMeshSlotSkinsWithItsOwnPose) {
         ASSERT_EQ(renderer.buffers().boneBlocks(), render::BoneBlocks::PerMeshSlot);
         const std::uint32_t blockRows = renderer.buffers().slotBoneRows();
         const double height = soldier.height();
+        const std::vector<model::LodMorphTarget> targets = model::lodMorphTargets(soldier, render::lodsOf(soldier));
         std::map<std::uint32_t, std::uint32_t> previousSlot;
         std::uint32_t changedSlot = 0;
         for (const auto& [z, time] : {std::pair{6.0f, 0.6f}, std::pair{-24.0f, 1.35f}}) {
@@ -264,7 +265,8 @@ TEST_F(GpuTest, ACharacterThatChangesMeshSlotSkinsWithItsOwnPose) {
                 if (previousSlot.contains(c) && previousSlot[c] != slot) ++changedSlot;
                 crowd.animateCharacter(c, time, bones);
                 const test::DrawnCharacter& d = where.at(c);
-                const std::vector<skin::CpuSkinnedVertex> expected = test::cpuSkinnedCharacter(soldier, bones, d.lod, states[c]);
+                const std::vector<skin::CpuSkinnedVertex> expected =
+                    test::cpuFadedCharacter(soldier, targets, skin::skinOnCpu(soldier, bones), d.lod, states[c]);
                 const test::ReadbackVertices gpu =
                     test::readSkinnedVertices(*context, renderer.method().skinnedVertices(), d.firstVertex, d.vertexCount);
                 for (std::uint32_t v = 0; v < d.vertexCount; ++v)

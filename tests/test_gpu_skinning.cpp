@@ -177,6 +177,7 @@ MorphError compareMorphWithCpu(const gpu::VulkanContext& context, const model::S
     renderer.renderFrame(time);
     renderer.finish();
     const std::vector<std::uint32_t> states = test::readShadowLists(context, renderer).states;
+    const std::vector<model::LodMorphTarget> targets = model::lodMorphTargets(model, render::lodsOf(model));
     std::vector<gpu::BoneRows> bones(model.skeleton.jointCount());
     MorphError error;
     for (const auto& [c, where] : test::readDrawList(context, renderer)) {
@@ -185,7 +186,7 @@ MorphError compareMorphWithCpu(const gpu::VulkanContext& context, const model::S
         if (steps > 0 && steps < FADE_STEPS) ++error.fading;
         crowd.animateCharacter(c, time, bones);
         const std::vector<skin::CpuSkinnedVertex> own = skin::skinOnCpu(model, bones);
-        const std::vector<skin::CpuSkinnedVertex> expected = test::cpuSkinnedCharacter(model, bones, where.lod, states[c]);
+        const std::vector<skin::CpuSkinnedVertex> expected = test::cpuFadedCharacter(model, targets, own, where.lod, states[c]);
         const test::ReadbackVertices gpu =
             test::readSkinnedVertices(context, renderer.method().skinnedVertices(), where.firstVertex, where.vertexCount);
         for (std::uint32_t v = 0; v < where.vertexCount; ++v) {

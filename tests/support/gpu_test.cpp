@@ -11,7 +11,6 @@
 #include "app/crowd_app.h"
 #include "gpu/buffer.h"
 #include "gpu/one_shot_commands.h"
-#include "model/lod_morph.h"
 #include "render/camera.h"
 #include "render/geometry_pool.h"
 #include "render/frame_view.h"
@@ -171,14 +170,13 @@ model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed) {
     return app::loadModel(name, seed).data()->model;
 }
 
-std::vector<skin::CpuSkinnedVertex> cpuSkinnedCharacter(const model::SkinnedModel& model,
-                                                        std::span<const gpu::BoneRows> bones, std::uint32_t lod,
-                                                        std::uint32_t state) {
-    const std::vector<skin::CpuSkinnedVertex> own = skin::skinOnCpu(model, bones);
+std::vector<skin::CpuSkinnedVertex> cpuFadedCharacter(const model::SkinnedModel& model,
+                                                      const std::vector<model::LodMorphTarget>& targets,
+                                                      const std::vector<skin::CpuSkinnedVertex>& own, std::uint32_t lod,
+                                                      std::uint32_t state) {
     const std::uint32_t steps = state >> FADE_SHIFT;
     if (steps == 0 || lod + 1 >= LOD_COUNT) return own;
-    const std::vector<model::SkinnedModel::Lod> lods = render::lodsOf(model);
-    return skin::morphOnCpu(own, model::lodMorphTargets(model, lods), lods[lod + 1].vertexCount,
+    return skin::morphOnCpu(own, targets, render::lodsOf(model)[lod + 1].vertexCount,
                             static_cast<double>(steps) / FADE_STEPS);
 }
 

@@ -16,6 +16,7 @@
 #include "crowd/crowd.h"
 #include "frame/crowd_recorder.h"
 #include "gpu/vulkan_context.h"
+#include "model/lod_morph.h"
 #include "skin/cpu_skinning.h"
 #include "skin/skinning_method.h"
 
@@ -132,12 +133,14 @@ struct DrawnCharacter {
 std::map<std::uint32_t, DrawnCharacter> readDrawList(const gpu::VulkanContext& context,
                                                      const TestRenderer& renderer);
 
-// The CPU reference of a drawn character's skinned vertices at level `lod`: skin::skinOnCpu with its
-// `bones`, and, when its state word (gpu_types.h, FADE_SHIFT) says it fades into the next coarser mesh
-// level, the vertices that level drops moved by the share (skin::morphOnCpu).
-std::vector<skin::CpuSkinnedVertex> cpuSkinnedCharacter(const model::SkinnedModel& model,
-                                                        std::span<const gpu::BoneRows> bones, std::uint32_t lod,
-                                                        std::uint32_t state);
+// The CPU reference of a drawn character's skinned vertices at level `lod`: `own` (skin::skinOnCpu with
+// its bones), and, when its state word (gpu_types.h, FADE_SHIFT) says it fades into the next coarser
+// mesh level, the vertices that level drops moved by the share (skin::morphOnCpu toward `targets`,
+// model::lodMorphTargets of the model's render::lodsOf).
+std::vector<skin::CpuSkinnedVertex> cpuFadedCharacter(const model::SkinnedModel& model,
+                                                      const std::vector<model::LodMorphTarget>& targets,
+                                                      const std::vector<skin::CpuSkinnedVertex>& own, std::uint32_t lod,
+                                                      std::uint32_t state);
 
 // The last frame's skinned vertices of one drawn character (it must be in the draw list).
 ReadbackVertices readSkinnedCharacter(const gpu::VulkanContext& context, TestRenderer& renderer,
