@@ -210,18 +210,18 @@ TEST_F(GpuTest, CharactersFadingBetweenLevelsMorphLikeTheCpuReference) {
     crowd::Crowd crowd(soldier, mixedCharacters(soldier, 8));
     render::CullSettings cull;
     cull.mode = render::CullMode::Off;  // every character drawn
-    cull.hysteresis = 0.5f;             // bands of 0.5 T to 1.5 T
+    cull.hysteresis = 0.5f;             // bands between mesh levels of T to 2 T
     test::TestRenderer probe(*context, crowd, skinningOptions(skin::Method::Compute, cull));
     probe.renderFrame(0.75f);
     probe.finish();
     const std::vector<float> sizes = projectedSizes(probe);
-    // A threshold in the middle of the sizes, its band wide enough to hold them all.
-    const float middle = 0.5f * (sizes.front() + sizes.back());
-    ASSERT_LT(sizes.back(), 1.4f * middle);
-    ASSERT_GT(sizes.front(), 0.6f * middle);
+    // A threshold whose band's middle (1.5 T) is the middle of the sizes, wide enough to hold them all.
+    const float middle = 0.5f * (sizes.front() + sizes.back()), threshold = middle / 1.5f;
+    ASSERT_LT(sizes.back(), 1.9f * threshold);
+    ASSERT_GT(sizes.front(), 1.1f * threshold);
     render::CullSettings lod0 = cull, lod1 = cull;
-    lod0.lodThresholds[0] = middle, lod0.lodThresholds[1] = 1e-3f;  // LOD 0 fading into 1
-    lod1.lodThresholds[0] = 1e6f, lod1.lodThresholds[1] = middle;   // LOD 1 fading into 2
+    lod0.lodThresholds[0] = threshold, lod0.lodThresholds[1] = 1e-3f;  // LOD 0 fading into 1
+    lod1.lodThresholds[0] = 1e6f, lod1.lodThresholds[1] = threshold;   // LOD 1 fading into 2
     const std::pair<const char*, render::CullSettings> bands[] = {{"LOD 0 -> 1", lod0}, {"LOD 1 -> 2", lod1}};
     for (skin::Method method : {skin::Method::Compute, skin::Method::TwoPass, skin::Method::TwoPassDirect}) {
         for (const auto& [band, settings] : bands) {

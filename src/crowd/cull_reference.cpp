@@ -56,12 +56,15 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
     return std::clamp(previous - 1u, finest, coarsest);
 }
 
-std::uint32_t fadedLod(float size, const glm::vec4& lod) { return lodForSize(size, lod, 1.0f - lod.z); }
+std::uint32_t fadedLod(float size, const glm::vec4& lod) {
+    return (size < lod.x ? 1u : 0u) + (size < lod.y ? 1u : 0u) + (size < lod.w * (1.0f - lod.z) ? 1u : 0u);
+}
 
 std::uint32_t fadeShare(float size, std::uint32_t finer, const glm::vec4& lod) {
     const float threshold = finer == 0u ? lod.x : finer == 1u ? lod.y : finer == 2u ? lod.w : 0.0f;
     if (threshold <= 0.0f || lod.z <= 0.0f) return 0u;
-    const float share = std::clamp((threshold * (1.0f + lod.z) - size) / (2.0f * lod.z * threshold), 0.0f, 1.0f);
+    const float top = threshold * (1.0f + (finer == 2u ? lod.z : 2.0f * lod.z));
+    const float share = std::clamp((top - size) / (2.0f * lod.z * threshold), 0.0f, 1.0f);
     return static_cast<std::uint32_t>(std::floor(share * static_cast<float>(FADE_STEPS) + 0.5f));
 }
 
