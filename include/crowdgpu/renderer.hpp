@@ -113,13 +113,14 @@ struct RendererSettings {
     bool lod = true;
     float lodThresholds[2] = {150.0f, 50.0f};  // pixels of pose-sphere diameter for LOD 0 and 1
     float lodHysteresis = 0.1f;
-    // Level changes fade: within lodHysteresis of a threshold (the LOD thresholds and, with impostors,
-    // the impostor threshold) the coarser level's share rises across that band of sizes, so no change
-    // pops (hysteresis is then not needed). Between mesh levels the finer level's shape morphs into the
-    // coarser one as it is skinned (drawn once); into its impostor a character is drawn at both, each on
-    // a complementary screen-space dither of its pixels. With the methods that skin into a buffer
-    // every frame; VertexShader, VertexShaderInstanced and Static do not fade. Fades cost 0.5-3 % of a
-    // mesh-heavy frame on the H200 (docs/picture-quality.md). Off: levels switch at once, with hysteresis.
+    // Level changes fade: across a band of sizes the coarser level's share rises, so no change pops
+    // (hysteresis is then not needed). Between mesh levels the finer level's shape morphs into the
+    // coarser one as it is skinned (drawn once), over the band from T (1 + 2 lodHysteresis) down to the
+    // threshold T, where the coarser level takes over; into its impostor a character is drawn at both,
+    // each on a complementary screen-space dither of its pixels, over T (1 +- lodHysteresis). With the
+    // methods that skin into a buffer every frame; VertexShader, VertexShaderInstanced and Static do
+    // not fade. Fades cost nothing measurable on the H200 (docs/picture-quality.md). Off: levels
+    // switch at once, with hysteresis.
     bool lodFade = true;
     bool impostors = false;          // characters under impostorThreshold pixels as animated impostors
     float impostorThreshold = 32.0f;

@@ -45,7 +45,7 @@ usage: crowd-bench [options]
   --shadow-raster hardware|compute  the shadow map's casters by the graphics pipeline or in compute
                        (default compute)
   --shadow-cascades N  the shadow map's cascades, 1 to 4, split by distance (default 1)
-  --lod-fade on|off    level and impostor changes fade across the hysteresis band (default on)
+  --lod-fade on|off    level changes morph and impostor changes dither instead of popping (default on)
   --impostor-blend on|off  impostors blend four atlas cells, or show the nearest (default on)
   --far-crowd average|off  impostors of 16 px or less drawn in compute add their coverage to a blended
                        layer; off: each wins whole pixels or none (default average)

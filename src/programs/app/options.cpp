@@ -73,9 +73,11 @@ usage: crowd-render [options]
                           to reach at 1e9 as at 0)
   --lod-hysteresis F      a character keeps its level until its size passes a threshold by this
                           fraction of it, 0..0.5 (default 0.1)
-  --lod-fade on|off       within that fraction of a threshold a character is drawn at both levels on
-                          complementary dithered pixels, so level and impostor changes fade instead of
-                          popping (in place of hysteresis; not with vs and vs-instanced) (default on)
+  --lod-fade on|off       level and impostor changes fade instead of popping: up to twice that
+                          fraction above a level's threshold its shape morphs into the coarser level's;
+                          within that fraction of the impostor threshold mesh and impostor share
+                          dithered pixels (in place of hysteresis; not with vs, vs-instanced and static)
+                          (default on)
   --clip NAME|INDEX       clip every character plays; "random" picks one per character (default walk)
   --behaviour NAME        in-place (every character loops its clip where it stands, as in the paper),
                           march (a formation in step: out, about turn, back, halt) or mill (each
