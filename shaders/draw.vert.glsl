@@ -23,6 +23,6 @@ void main() {
     // Minus the draw's vertexOffset, the vertex index is the model's own.
     vUv = textureCoordinates[model.info.x + uint(gl_VertexIndex - gl_BaseVertexARB)];
     vWorld = inPosition.xyz;
-    vMaterial = drawMaterial(characterColor(scene, material, character.tint.rgb), textureSlot(scene, material, model),
+    vMaterial = drawMaterial(characterColor(material, character.tint.rgb), textureSlot(material, model),
                              characterStates[gl_InstanceIndex] >> FADE_SHIFT);
 }

@@ -53,8 +53,8 @@ using uint = std::uint32_t;
 
 // Most influences a vertex can have; the loaders reduce to the 4 largest.
 #define MAX_INFLUENCES 4
-// Every model's material colours live in one palette in SceneUniforms (the pool offsets each
-// model's indices); one model has at most MAX_MODEL_MATERIALS.
+// Every model's material colours live in one palette, MaterialTable (the pool offsets each model's
+// indices); one model has at most MAX_MODEL_MATERIALS.
 #define MAX_MODEL_MATERIALS 16
 #define MAX_MATERIALS 128
 
@@ -432,15 +432,22 @@ struct SkinPassParams {
     uvec4 target;
 };
 
+// Every model's materials (render::GeometryPool::materials, a storage buffer in the scene set, binding 5;
+// fixed while the pool is). Not in SceneUniforms: each vertex indexes it by its own material, and a
+// uniform buffer indexed by a value that differs across a warp serializes on NVIDIA (0.12 ms of
+// paper-fig4's colour pass on the H200, docs/gpu-driven-frame.md).
+struct MaterialTable {
+    uvec4 textured;  // bit m of (x, y, z, w)[m / 32] set when material m is multiplied by its model's
+                     // base-colour texture
+    vec4 colors[MAX_MATERIALS];
+};
+
 // Per-frame uniforms of the draw pass (pass 2), the ground and the vertex-shader baseline.
 struct SceneUniforms {
     mat4 viewProjection;
     vec4 lightDirection;  // xyz: unit vector towards the light, w: ambient term
     vec4 skyColor;
     vec4 groundColor;     // xyz colour, w: checker tile size in metres
-    uvec4 materialFlags;  // bit m of (x, y, z, w)[m / 32] set when material m is multiplied by its
-                          // model's base-colour texture
-    vec4 palette[MAX_MATERIALS];
     // World to the first shadow cascade's clip space (x, y in [-1, 1] over its square; z, the depth, is
     // every cascade's: they share the light's view and depth range and differ in x, y extents only);
     // each cascade's clip x, y from the first's (xy: scale, zw: offset; render/shadow_cascades.h), and

@@ -41,7 +41,7 @@ void main() {
     uint material = uint(inNormal.w);
     vNormal = s.normal;
     // Untinted: the impostor multiplies by each character's tint, as the mesh draw does.
-    vAlbedo = characterColor(scene, material, vec3(1.0));
+    vAlbedo = characterColor(material, vec3(1.0));
     vUv = textureCoordinates[uint(gl_VertexIndex)];
-    vTextureSlot = textureSlot(scene, material, models[pose.y]);
+    vTextureSlot = textureSlot(material, models[pose.y]);
 }

@@ -66,9 +66,9 @@ void main() {
     const ModelRecord model = models[character.ids.x];
     const vec4 n0 = normals[vertex.x], n1 = normals[vertex.y], n2 = normals[vertex.z];
     const vec3 normal = b.x * n0.xyz + b.y * n1.xyz + b.z * n2.xyz;
-    const vec3 albedo = b.x * characterColor(scene, uint(n0.w), character.tint.rgb) +
-                        b.y * characterColor(scene, uint(n1.w), character.tint.rgb) +
-                        b.z * characterColor(scene, uint(n2.w), character.tint.rgb);
+    const vec3 albedo = b.x * characterColor(uint(n0.w), character.tint.rgb) +
+                        b.y * characterColor(uint(n1.w), character.tint.rgb) +
+                        b.z * characterColor(uint(n2.w), character.tint.rgb);
     const vec2 u0 = meshUvs[model.info.x + local.x], u1 = meshUvs[model.info.x + local.y],
                u2 = meshUvs[model.info.x + local.z];
     const vec3 bx = weightsAt(c0, c1, c2, centre + vec2(1.0, 0.0)), by = weightsAt(c0, c1, c2, centre + vec2(0.0, 1.0));
@@ -76,7 +76,7 @@ void main() {
     gUvDx = bx.x * u0 + bx.y * u1 + bx.z * u2 - uv;
     gUvDy = by.x * u0 + by.y * u1 + by.z * u2 - uv;
     // The provoking (first) vertex's slot, as the draw pass's flat varying.
-    const uint slot = textureSlot(scene, uint(n0.w), model);
+    const uint slot = textureSlot(uint(n0.w), model);
     const vec3 world = b.x * w0 + b.y * w1 + b.z * w2;
     outColor = vec4(shade(scene, normal, albedo * sampleBaseColor(slot, uv), world, cameraPosition.xyz), 1.0);
     gl_FragDepth = uintBitsToFloat(depthBits);

@@ -298,9 +298,8 @@ void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& 
     const render::Camera camera = render::cameraOf(view);
     const render::ShadowCascades& cascades = cascades_[slot];
     for (std::uint32_t c = 0; c < cascades.count; ++c)
-        scene_.updateLight(slot, c, render::makeSceneUniforms(cascades.mapClip(c), pool_.palette(), pool_.texturedMaterials(), 0.0f));
-    gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, pool_.palette(),
-                                                         pool_.texturedMaterials(), 0.5f / (camera.farPlane + 1.0f),
+        scene_.updateLight(slot, c, render::makeSceneUniforms(cascades.mapClip(c), 0.0f));
+    gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, 0.5f / (camera.farPlane + 1.0f),
                                                          cascades, shadows_, shadowMap_.size());
     scene.shadow.w = static_cast<float>(groundSunlight_.firstLevel(view.viewport.extent));
     scene_.update(slot, scene);
@@ -431,8 +430,8 @@ void CrowdRecorder::setCull(const render::CullSettings& cull) {
 void CrowdRecorder::enableImpostors() {
     if (impostorDraw_) return;
     if (!atlas_) {
-        // The bake reads the palette and textures through a scene set: slot 0's (the same in every slot).
-        scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), pool_.palette(), pool_.texturedMaterials(), 0.0f));
+        // The bake reads the materials and textures through a scene set: slot 0's (the same in every slot).
+        scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), 0.0f));
         // The atlas keeps the context it was made with alive: another recorder may share it.
         atlas_ = std::shared_ptr<const render::ImpostorAtlas>(
             new render::ImpostorAtlas(context_, pool_, crowd_.models(), render::impostorPropSets(crowd_),

@@ -24,7 +24,7 @@ std::uint64_t textureBytes(const model::SkinnedModel& model) {
 }
 
 // Bind-pose vertices, indices of every LOD, texture coordinates, morph targets between levels, the
-// model table, textures (a white one for untextured models): render::GeometryPool's buffers.
+// model table, the material table, textures (a white one for untextured models): render::GeometryPool's buffers.
 std::uint64_t geometryBytes(const crowd::Crowd& crowd) {
     std::uint64_t vertices = 0, indices = 0, textures = 4;
     for (const model::SkinnedModel* m : crowd.models()) {
@@ -33,7 +33,7 @@ std::uint64_t geometryBytes(const crowd::Crowd& crowd) {
         textures += textureBytes(*m);
     }
     return vertices * (sizeof(gpu::SkinVertex) + sizeof(glm::vec2) + sizeof(gpu::LodMorphTarget)) + indices * sizeof(std::uint32_t) +
-           crowd.models().size() * sizeof(gpu::ModelRecord) + textures;
+           crowd.models().size() * sizeof(gpu::ModelRecord) + sizeof(gpu::MaterialTable) + textures;
 }
 
 std::uint64_t libraryBytes(const anim::ClipLibrary& library) {

@@ -45,10 +45,10 @@ static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + kCascadePlanesBytes + 4 
               offsetof(CullUniforms, shadow) == 192 + kCascadePlanesBytes &&
               offsetof(CullUniforms, shadowFlags) == 208 + kCascadePlanesBytes && offsetof(CullUniforms, fade) == 224 + kCascadePlanesBytes);
 static_assert(sizeof(SkinPassParams) == 32);
-static_assert(offsetof(SceneUniforms, materialFlags) == 112 && offsetof(SceneUniforms, palette) == 128 &&
-              offsetof(SceneUniforms, shadowLight) == 128 + 16 * MAX_MATERIALS &&
-              offsetof(SceneUniforms, shadowSquares) == 192 + 16 * MAX_MATERIALS + 16 * MAX_SHADOW_CASCADES &&
-              sizeof(SceneUniforms) == 192 + 16 * MAX_MATERIALS + 32 * MAX_SHADOW_CASCADES + 64);
+static_assert(offsetof(SceneUniforms, shadowLight) == 112 &&
+              offsetof(SceneUniforms, shadowSquares) == 176 + 16 * MAX_SHADOW_CASCADES &&
+              sizeof(SceneUniforms) == 176 + 32 * MAX_SHADOW_CASCADES + 64);
+static_assert(offsetof(MaterialTable, colors) == 16 && sizeof(MaterialTable) == 16 + 16 * MAX_MATERIALS);
 
 // Animation tables: vec4 members only (std430 arrays of them need no padding), a track is four uints.
 static_assert(sizeof(AnimationModel) == 64 && offsetof(AnimationModel, root) == 16);

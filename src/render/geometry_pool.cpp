@@ -1,5 +1,6 @@
 #include "render/geometry_pool.h"
 
+#include <algorithm>
 #include <string>
 
 #include "crowd/pose_bounds.h"
@@ -88,6 +89,11 @@ GeometryPool::GeometryPool(const gpu::VulkanContext& context, std::span<const mo
                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "level-of-detail morph targets");
         modelTable_ = gpu::createBufferWithData(context, std::as_bytes(std::span(records_)),
                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "model table");
+        gpu::MaterialTable table{};
+        table.textured = texturedMaterials_;
+        std::copy(palette_.begin(), palette_.end(), table.colors);
+        materials_ = gpu::createBufferWithData(context, std::as_bytes(std::span(&table, 1)),
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "material table");
     } catch (...) {
         release();
         throw;
@@ -97,6 +103,7 @@ GeometryPool::GeometryPool(const gpu::VulkanContext& context, std::span<const mo
 GeometryPool::~GeometryPool() { release(); }
 
 void GeometryPool::release() {
+    gpu::destroyBuffer(context_, materials_);
     gpu::destroyBuffer(context_, modelTable_);
     gpu::destroyBuffer(context_, lodMorphs_);
     gpu::destroyBuffer(context_, uvs_);
@@ -105,7 +112,8 @@ void GeometryPool::release() {
 }
 
 VkDeviceSize GeometryPool::bytes() const {
-    return bindVertices_.size + indices_.size + uvs_.size + lodMorphs_.size + modelTable_.size + textures_.bytes();
+    return bindVertices_.size + indices_.size + uvs_.size + lodMorphs_.size + modelTable_.size + materials_.size +
+           textures_.bytes();
 }
 
 }  // namespace render

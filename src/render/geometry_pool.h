@@ -34,6 +34,8 @@ public:
     // fades between mesh levels.
     const gpu::Buffer& lodMorphTargets() const { return lodMorphs_; }
     const gpu::Buffer& modelTable() const { return modelTable_; }
+    // gpu::MaterialTable: palette() and texturedMaterials() as the shaders read them.
+    const gpu::Buffer& materials() const { return materials_; }
     const MaterialTextures& textures() const { return textures_; }
     // The model table as the GPU has it.
     const std::vector<gpu::ModelRecord>& models() const { return records_; }
@@ -61,6 +63,7 @@ private:
     gpu::Buffer uvs_;
     gpu::Buffer lodMorphs_;
     gpu::Buffer modelTable_;
+    gpu::Buffer materials_;
 };
 
 // The levels of a model as the pool draws them: its own, or the full mesh three times.

@@ -19,18 +19,19 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
                      GroundOptions ground)
     : context_(context), framesInFlight_(framesInFlight) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    const VkDescriptorSetLayoutBinding bindings[5] = {
+    const VkDescriptorSetLayoutBinding bindings[6] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
         {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_TEXTURES, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both, nullptr}};
     setLayout_ = gpu::createSetLayout(context, bindings);
     // One set per frame in flight seen from the camera, then one per frame and shadow cascade seen from the light.
     const std::uint32_t sets = framesInFlight * (1 + kMostShadowCascades);
     const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets},
                                            {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets * (MAX_TEXTURES + 2)},
-                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sets}};
+                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * sets}};
     pool_ = gpu::createDescriptorPool(context, sizes, sets);
     for (std::uint32_t i = 0; i < sets; ++i) {
         uniforms_.push_back(gpu::createBuffer(context, sizeof(gpu::SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -41,6 +42,8 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         writeTextures(sets_.back(), pool);
         gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                    pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
+        gpu::writeBufferDescriptor(context, sets_.back(), 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pool.materials().buffer, 0,
+                                   VK_WHOLE_SIZE);
         constexpr VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         constexpr VkImageLayout readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
         gpu::writeImageDescriptor(context, sets_.back(), 3, sampled, shadowMap.sampler(), shadowMap.view(), readOnly);
@@ -99,8 +102,7 @@ void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const
     vkCmdDraw(cmd, 6, 1, 0, 0);
 }
 
-gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     const glm::uvec4& texturedMaterials, float fogDensity,
+gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, float fogDensity,
                                      const ShadowCascades& cascades, bool shadows, std::uint32_t shadowMapSize) {
     gpu::SceneUniforms u{};
     u.shadowLight = cascades.clip[0];
@@ -114,12 +116,10 @@ gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std:
     for (std::uint32_t c = 0; c < kMostShadowCascades; ++c)
         u.shadowSplits[static_cast<int>(c)] = c + 1 < cascades.count ? cascades.splits[c + 1] : 1e30f;
     u.shadow = glm::vec4(shadows ? 1.0f : 0.0f, kShadowDepthBias, 1.0f / static_cast<float>(shadowMapSize), 0.0f);
-    u.materialFlags = texturedMaterials;
     u.viewProjection = viewProjection;
     u.lightDirection = glm::vec4(lightDirection(), 0.35f);
     u.skyColor = glm::vec4(kSkyColor, fogDensity);
     u.groundColor = glm::vec4(0.3f, 0.42f, 0.22f, 2.0f);
-    for (std::size_t i = 0; i < std::min<std::size_t>(palette.size(), MAX_MATERIALS); ++i) u.palette[i] = palette[i];
     return u;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// What every method's draw shares: the per-frame scene uniforms (camera, light, palette), their
-// descriptor set, and the ground plane.
+// What every method's draw shares: the per-frame scene uniforms (camera, light, shadow cascades), their
+// descriptor set (with the pool's texture coordinates, textures and material table), and the ground plane.
 #include <cstdint>
 #include <vector>
 
@@ -76,10 +76,9 @@ private:
     VkPipeline groundPipeline_ = VK_NULL_HANDLE;
 };
 
-// Scene uniforms for a camera and the pooled palette: sun from the upper left, pale sky, grass; and the
-// shadow cascades' transforms (shadows off: `shadows` false).
-gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, const std::vector<glm::vec4>& palette,
-                                     const glm::uvec4& texturedMaterials, float fogDensity,
+// Scene uniforms for a camera: sun from the upper left, pale sky, grass; and the shadow cascades'
+// transforms (shadows off: `shadows` false). The materials are the pool's (GeometryPool::materials).
+gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, float fogDensity,
                                      const ShadowCascades& cascades = {}, bool shadows = false,
                                      std::uint32_t shadowMapSize = 1);
 

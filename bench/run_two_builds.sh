@@ -1,23 +1,28 @@
 #!/usr/bin/env bash
-# Fades between mesh levels as geomorphs (AFTER) against the dithered double draws (BEFORE), on a lent
-# GPU machine, compute skinning unless named, 1920x1080, shadows on (the default):
+# Two builds against each other on a lent GPU machine: BEFORE (.devbin/before) and AFTER (.devbin/after),
+# interleaved, compute skinning unless named, 1920x1080, shadows on (the default). First written for fades
+# between mesh levels as geomorphs against the dithered double draws (as run_lod_morph_ab.sh), then used
+# for each change of the colour pass since:
 # 1. Cost (PARTS has "cost"): crowd-bench, 200 frames after 20, both builds interleaved in ROUNDS
 #    rounds: paper-fig4 with compute and two-pass, with fades on (the default) and off; stress
 #    100,000 from 20 s (inside the crowd); the default scene. Median and p95 frame, shadow and colour
 #    pass, GPU total, and the characters drawn at each level.
 #    With CONFIGS=wide instead: cavalry (about 10,000 riders), stress 250,000 inside with every one a
-#    mesh, stress 1,000,000 inside with impostors, and paper-fig4 with a 5 % band (--lod-hysteresis 0.05).
+#    mesh, stress 1,000,000 inside with impostors, paper-fig4 with a 5 % band (--lod-hysteresis 0.05)
+#    and paper-fig4 with vs-instanced.
+#    With CONFIGS=shadows: stress 100,000 inside with shadows on and off (issue 18's shadow cost; paper-fig4's
+#    is in the first list).
 #    With CONFIGS=mill: 1,000,000 milling soldiers with impostors inside the crowd (from 20 s) and from
 #    above (from 30 s), for issue 18's p95 (run with FRAMES=600 WARMUP=60, as bench/run_planning.sh).
 # 2. Pictures (PARTS has "pictures"): paper-fig4's 60th frame from each build with fades on and off,
 #    compared by image-psnr; the PNGs land in $OUT.
-# Writes $OUT/lod-morph-ab.tgz (every run's output, CSV, commands and summary).
+# Writes $OUT/two-builds.tgz (every run's output, CSV, commands and summary).
 #
 # Expects the Vulkan loader packages in .gl/, BEFORE's binaries (crowd-bench, crowd-render, image-psnr
 # with their shared libraries) in BEFORE (.devbin/before) and AFTER's in AFTER (.devbin/after).
-#   on the H100 or H200:  bash bench/run_lod_morph_ab.sh
-#   here on lavapipe:     DEVICE= FRAMES=5 WARMUP=1 SIZE=480x270 STRESS_COUNT=8000 BEFORE=... AFTER=build bash bench/run_lod_morph_ab.sh
-# PARTS ("cost pictures"), CONFIGS ("paper", "wide" or "mill"), ROUNDS (2), FRAMES (200), WARMUP (20), SIZE (1920x1080), STRESS_COUNT
+#   on the H100 or H200:  bash bench/run_two_builds.sh
+#   here on lavapipe:     DEVICE= FRAMES=5 WARMUP=1 SIZE=480x270 STRESS_COUNT=8000 BEFORE=... AFTER=build bash bench/run_two_builds.sh
+# PARTS ("cost pictures"), CONFIGS ("paper", "wide", "shadows" or "mill"), ROUNDS (2), FRAMES (200), WARMUP (20), SIZE (1920x1080), STRESS_COUNT
 # (100000), DEVICE (NVIDIA): part of the device's name, empty for the first device.
 set -uo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lent_machine.sh"
@@ -30,9 +35,9 @@ warmup=${WARMUP:-20}
 size=${SIZE:-1920x1080}
 stress_count=${STRESS_COUNT:-100000}
 device=${DEVICE-NVIDIA}
-res=/tmp/lod-morph-ab
+res=/tmp/two-builds
 out=${OUT:-/tmp/out}
-begin_run run_lod_morph_ab
+begin_run run_two_builds
 failures=0
 
 # name: scene flags | method | setting flags
@@ -51,6 +56,12 @@ if [[ ${CONFIGS:-paper} == wide ]]; then
     "stress250k:--scene stress --counts 250000 --start 20 --impostors off:compute:"
     "million:--scene stress --counts 1000000 --start 20 --impostors on:compute:"
     "fig4-band5:--scene paper-fig4:compute:--lod-hysteresis 0.05"
+    "fig4-vsinst:--scene paper-fig4:vs-instanced:"
+  )
+elif [[ ${CONFIGS:-paper} == shadows ]]; then
+  configs=(
+    "stress:--scene stress --counts $stress_count --start 20:compute:"
+    "stress-noshadow:--scene stress --counts $stress_count --start 20:compute:--shadows off"
   )
 elif [[ ${CONFIGS:-paper} == mill ]]; then
   configs=(
@@ -92,5 +103,5 @@ if [[ $parts == *pictures* ]]; then
   cp "$res"/fig4-*-on.png "$out/pics/" 2>/dev/null
 fi
 
-tar -czf "$out/lod-morph-ab.tgz" -C /tmp lod-morph-ab
+tar -czf "$out/two-builds.tgz" -C /tmp two-builds
 echo "failures: $failures"
