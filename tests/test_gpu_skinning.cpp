@@ -2,6 +2,7 @@
 // CPU reference; characters are independent; every method draws the same picture.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -330,6 +331,39 @@ void expectMethodsDrawTheSamePicture(const gpu::VulkanContext& context, const st
 }
 
 }  // namespace
+
+// A pool without textured materials draws with the fragment shader that reads no texture coordinates
+// (draw.frag.glsl, kTextured 0); a pool with one, with the shader that samples. The soldier given a
+// one-texel texture on every material: white must draw what the untextured soldier draws (the sample
+// is the identity there), and dark grey must darken the characters, so a renderer that kept the
+// untextured variant for a textured pool fails.
+TEST_F(GpuTest, ATexturedPoolSamplesItsTextureAndWhiteChangesNothing) {
+    const model::SkinnedModel plain = test::loadModel("soldier", 1);
+    auto textured = [&](std::uint8_t level) {
+        model::SkinnedModel m = plain;
+        m.uvs.assign(m.vertices.size(), glm::vec2(0.5f));
+        m.baseColorTexture = {1, 1, {level, level, level, 255}};
+        m.texturedMaterials = (1u << m.materialColors.size()) - 1u;
+        return m;
+    };
+    app::SceneOptions scene;
+    scene.count = 16;
+    auto picture = [&](const model::SkinnedModel& m) {
+        return renderScene(*context, crowd::Crowd(m, test::buildCharacters(m, scene)), skin::Method::Compute, 1);
+    };
+    auto meanLevel = [](const app::Rgba8Image& image) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) sum += i % 4 == 3 ? 0.0 : image.pixels[i];
+        return sum / (0.75 * static_cast<double>(image.pixels.size()));
+    };
+    const app::Rgba8Image untextured = picture(plain), white = picture(textured(255)), dark = picture(textured(64));
+    EXPECT_GE(test::fractionOfMatchingPixels(white, untextured, 1), 0.999);
+    const double darkened = 1.0 - test::fractionOfMatchingPixels(dark, untextured, 8);
+    std::printf("untextured mean level %.2f, white texture %.2f, dark grey %.2f (%.1f %% of pixels darker by over 8)\n",
+                meanLevel(untextured), meanLevel(white), meanLevel(dark), 100.0 * darkened);
+    EXPECT_GT(darkened, 0.02) << "the texture must show on the characters";
+    EXPECT_LT(meanLevel(dark), meanLevel(untextured) - 1.0);
+}
 
 TEST_F(GpuTest, AllMethodsDrawTheSameSoldiers) { expectMethodsDrawTheSamePicture(*context, "soldier"); }
 

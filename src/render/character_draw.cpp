@@ -82,6 +82,10 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     colour.depthFormat = target.depth;
     colour.samples = target.samples;
     colour.layout = layout_;
+    // A pool without textured materials draws with the variant that reads no texture coordinates
+    // (draw.frag.glsl, kTextured).
+    const std::uint32_t textured = pool_.texturedMaterials() != glm::uvec4(0u) ? 1u : 0u;
+    colour.fragmentConstants = {0u, textured};
     createPipelines(colour, colour_);
     // Fades into impostors (from skinned vertices only): the character's mesh keeps the pixels the
     // impostor's complementary dither leaves (draw.frag.glsl, kDithered). Only it discards: the colour
@@ -92,12 +96,13 @@ void CharacterDraw::createPipelines(VkDescriptorSetLayout sceneSetLayout, const 
     dithered.vertexShader = draw_vert_spv;
     dithered.bindings = {{0, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
     dithered.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0}};
-    dithered.fragmentConstants = {1u};
+    dithered.fragmentConstants = {1u, textured};
     intoImpostor_ = gpu::createGraphicsPipeline(context_, dithered);
     // The shadow map: depth only, both faces (the light's projection is not mirrored like the camera's),
     // biased by slope so that lit surfaces do not shadow themselves.
     gpu::GraphicsPipelineDesc shadow = colour;
     shadow.fragmentShader = shadow_frag_spv;
+    shadow.fragmentConstants = {};
     shadow.colorFormats = {};
     shadow.depthFormat = kShadowFormat;
     shadow.samples = VK_SAMPLE_COUNT_1_BIT;
