@@ -57,7 +57,7 @@ std::uint32_t chooseLod(float size, std::uint32_t previous, const glm::vec4& lod
 }
 
 std::uint32_t fadedLod(float size, const glm::vec4& lod) {
-    return (size < lod.x ? 1u : 0u) + (size < lod.y ? 1u : 0u) + (size < lod.w * (1.0f - lod.z) ? 1u : 0u);
+    return lodForSize(size, glm::vec4(lod.x, lod.y, lod.z, lod.w * (1.0f - lod.z)), 1.0f);
 }
 
 std::uint32_t fadeShare(float size, std::uint32_t finer, const glm::vec4& lod) {

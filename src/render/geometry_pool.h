@@ -34,14 +34,14 @@ public:
     // fades between mesh levels.
     const gpu::Buffer& lodMorphTargets() const { return lodMorphs_; }
     const gpu::Buffer& modelTable() const { return modelTable_; }
-    // gpu::MaterialTable: palette() and texturedMaterials() as the shaders read them.
+    // gpu::MaterialTable: every model's material colours, each model's indices offset by the materials
+    // before it (materialBase), and texturedMaterials(), as the shaders read them.
     const gpu::Buffer& materials() const { return materials_; }
     const MaterialTextures& textures() const { return textures_; }
     // The model table as the GPU has it.
     const std::vector<gpu::ModelRecord>& models() const { return records_; }
     std::uint32_t modelCount() const { return static_cast<std::uint32_t>(records_.size()); }
-    // Every model's materials, each model's indices offset by the materials before it.
-    const std::vector<glm::vec4>& palette() const { return palette_; }
+    // Bit m of (x, y, z, w)[m / 32]: pooled material m is textured (as materials() holds it).
     glm::uvec4 texturedMaterials() const { return texturedMaterials_; }
     // The pooled material index of model m's material 0 (vertex material indices are offset by it).
     std::uint32_t materialBase(std::uint32_t model) const { return materialBases_[model]; }
