@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Issue 19's anti-aliasing measured on a lent GPU machine. Pictures: the default scene, paper-fig4 and
 # paper-fig5 at 1280x720 (and, as in the issue's table, stress 1,000,000 from above with impostors at
-# 1920x1080), each with --aa off, msaa2, msaa4 and msaa8, against a 4x4 supersampled render of the
+# 1920x1080; and stress 100,000 inside the crowd at 1280x720, the frame whose cost is timed), each with --aa off, msaa2, msaa4 and msaa8, against a 4x4 supersampled render of the
 # same frame (crowd-render at 4x the width and height, box-filtered down in linear light by
 # image-downsample), compared by image-psnr; and against a second reference that also scales the
 # pixel thresholds of the levels of detail and impostors by 4 (--lod-thresholds 600,200
@@ -9,8 +9,8 @@
 # first reference's finer levels differ from the 1x frame by more than its edges do. Cost: crowd-bench on paper-fig4 and stress 100,000
 # inside the crowd (--start 20) at 1920x1080 with each --aa, per method (compute, two-pass),
 # interleaved, twice, so drift shows; the frame's median and the GPU total against --aa off.
-# Prints the PSNR table and the cost table, and writes $OUT/aa.tgz (every run's output, the CSVs, the
-# pictures at 1280x720, the references brought down; the 4x renders stay in /tmp/aa-4x).
+# Prints the PSNR table and the cost table, and writes $OUT/aa.tgz (every run's output and the CSVs) and
+# $OUT/aa-pictures.tgz (the pictures and the references brought down; the 4x renders stay in /tmp/aa-4x).
 #
 # Expects the Vulkan loader packages in .gl/ and crowd-render, crowd-bench, image-psnr and
 # image-downsample with their shared libraries in .devbin/ (carried).
@@ -22,7 +22,8 @@
 # crowd-render's --frames (the picture is the last frame's); DEVICE (NVIDIA): part of the device's
 # name, empty for the first device; SIZE (1280x720): the pictures'; BENCH_SIZE (1920x1080): the
 # timings'; STRESS_COUNT (100000): the timed stress crowd; STRESS_PICTURE_COUNT (1000000; 0 leaves
-# that picture out) and STRESS_SIZE (1920x1080): the stress picture's; LEVELS ("off msaa2 msaa4
+# that picture out) and STRESS_SIZE (1920x1080): the stress picture's; INSIDE_PICTURE_COUNT (100000; 0
+# leaves it out): the crowd of the picture inside it, at SIZE; LEVELS ("off msaa2 msaa4
 # msaa8"): the --aa values, off first.
 # PARTS ("pictures cost"): "pictures" or "cost" alone, to split the run over two device calls (each
 # call has 10 minutes; the whole run may need more).
@@ -37,6 +38,7 @@ bench_size=${BENCH_SIZE:-1920x1080}
 stress_count=${STRESS_COUNT:-100000}
 stress_picture_count=${STRESS_PICTURE_COUNT:-1000000}
 stress_size=${STRESS_SIZE:-1920x1080}
+inside_picture_count=${INSIDE_PICTURE_COUNT:-100000}
 read -r -a levels <<<"${LEVELS:-off msaa2 msaa4 msaa8}"
 parts=${PARTS:-pictures cost}
 bin=$PWD/.devbin
@@ -62,6 +64,9 @@ times4() { local w=${1%x*} h=${1#*x}; echo "$((w * 4))x$((h * 4))"; }
 pictures=("default|--scene default|$size" "paper-fig4|--scene paper-fig4|$size" "paper-fig5|--scene paper-fig5|$size")
 if [[ $stress_picture_count != 0 ]]; then
   pictures+=("stress-above|--scene stress --count $stress_picture_count --impostors on --method compute|$stress_size")
+fi
+if [[ $inside_picture_count != 0 ]]; then
+  pictures+=("stress-inside|--scene stress --count $inside_picture_count --start 20 --method compute|$size")
 fi
 same_lod=(--lod-thresholds "600,200" --impostor-threshold 128)  # the defaults (150,50 and 32) x 4
 for entry in "${pictures[@]}"; do
@@ -157,5 +162,7 @@ done
     done
   done
 } | tee "$res/summary.txt"
-tar -czf "$out/aa.tgz" -C /tmp aa
+tar -czf "$out/aa.tgz" -C /tmp --exclude='*.png' aa
+(cd /tmp && shopt -s nullglob && pictures_made=(aa/*.png) && [[ ${#pictures_made[@]} == 0 ]] ||
+  tar -czf "$out/aa-pictures.tgz" "${pictures_made[@]}")
 [[ $failures == 0 ]] || { echo "run_aa: $failures run(s) failed (see their .txt in aa.tgz)"; exit 1; }

@@ -84,7 +84,8 @@ enum class ShadowRaster { Hardware, Compute };
 // Which rasterizer draws the impostors (docs/compute-raster.md): the hardware's; a compute pass into a
 // visibility buffer (64-bit atomics), resolved in the colour pass; or each impostor by its size on
 // screen (small ones in compute). Compute needs shaderInt64 and shaderBufferInt64Atomics enabled on the
-// device and a single-sampled target (else Renderer throws Unsupported); auto falls back to hardware.
+// device (else Renderer throws Unsupported); auto falls back to hardware. With a multisampled target,
+// what compute draws fills all samples of its pixels: merged by depth, its own edges not anti-aliased.
 enum class Raster { Hardware, Compute, Auto };
 // Names for reports and menus: "two-pass", "two-pass-direct", "vs", "vs-instanced", "compute",
 // "static"; "gpu", "cpu"; "gpu", "cpu", "off"; "hardware", "compute".
@@ -144,7 +145,7 @@ struct RendererSettings {
     std::uint32_t meshCapacity = 65536;  // with impostors: the most characters drawn as meshes a frame
                                          // (beyond it, the smallest on screen become impostors)
     Raster raster = Raster::Auto;  // the impostors' rasterizer (hardware: the frame as before it; auto falls back
-                                   // to hardware without 64-bit atomics or with multisampling)
+                                   // to hardware without 64-bit atomics)
     // Under Raster::Auto, the largest character (its pose sphere's diameter on screen, pixels) whose mesh
     // the compute rasterizer draws, for methods that skin into a buffer; larger ones stay on the hardware.
     // -1 (automatic): 64 px, on frames whose frame slot's previous frame drew at least 4,000,000 mesh

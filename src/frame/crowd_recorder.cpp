@@ -34,15 +34,11 @@ std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crow
 
 render::RasterMode rasterInEffect(const gpu::VulkanContext& context, const RecorderOptions& options) {
     if (options.raster == render::RasterMode::Hardware) return options.raster;
-    std::string missing;
-    if (!context.int64Atomics)
-        missing = "the features shaderInt64 and shaderBufferInt64Atomics, which " + context.description.name +
-                  " lacks or the device was created without";
-    else if (options.target.samples != VK_SAMPLE_COUNT_1_BIT)
-        missing = "a single-sampled target (anti-aliasing off; raster auto draws multisampled frames on the hardware)";
-    if (missing.empty()) return options.raster;
+    if (context.int64Atomics) return options.raster;
     if (options.raster == render::RasterMode::Auto) return render::RasterMode::Hardware;
-    throw gpu::Error("raster compute needs " + missing, gpu::ErrorKind::Unsupported);
+    throw gpu::Error("raster compute needs the features shaderInt64 and shaderBufferInt64Atomics, which " +
+                         context.description.name + " lacks or the device was created without",
+                     gpu::ErrorKind::Unsupported);
 }
 
 std::string viewportProblem(const VkPhysicalDeviceLimits& limits, const std::string& deviceName, render::RasterMode raster,

@@ -87,7 +87,7 @@ struct RecorderOptions {
     std::uint32_t meshCapacity = 0;
     render::ImpostorSettings impostorSettings;
     // Which rasterizer draws the impostors (docs/compute-raster.md). Compute is refused without 64-bit
-    // buffer atomics or with a multisampled target; auto then falls back to the hardware.
+    // buffer atomics; auto then falls back to the hardware.
     render::RasterMode raster = render::RasterMode::Hardware;
     // Under auto, the largest impostor (screen rectangle's longer side, pixels) drawn in compute.
     float rasterLimitPixels = render::kAutoRasterLimitPixels;
@@ -123,9 +123,9 @@ std::string viewportProblem(const VkPhysicalDeviceLimits& limits, const std::str
 // the bone blocks when they belong to slots.
 std::uint32_t meshSlots(const RecorderOptions& options, const crowd::Crowd& crowd);
 
-// The rasterizer the impostors get: options.raster where the device and target allow it (64-bit buffer
-// atomics, single-sampled), hardware for auto where they do not; compute where they do not throws
-// gpu::Error (Unsupported) saying why in one line.
+// The rasterizer the impostors get: options.raster where the device allows it (64-bit buffer atomics),
+// hardware for auto where it does not; compute where it does not throws gpu::Error (Unsupported)
+// saying why in one line. Multisampled targets keep the compute rasterizers (render/raster_mode.h).
 render::RasterMode rasterInEffect(const gpu::VulkanContext& context, const RecorderOptions& options);
 
 // Where this frame's skinned characters are, for a host's own passes (G-buffer, outline, picking):

@@ -39,7 +39,7 @@ ImpostorRaster::ImpostorRaster(const gpu::VulkanContext& context, const Geometry
                                std::uint32_t resolveTilePixels, FarCrowdSizes far)
     : context_(context), crowd_(crowd), lists_(lists), atlas_(atlas), sceneSetLayout_(sceneSetLayout), target_(target),
       resolveTilePixels_(resolveTilePixels), limitPixels_(limitPixels), far_(far), slots_(framesInFlight) {
-    requireComputeRaster(context, target);
+    requireComputeRaster(context);
     try {
         split_ = gpu::createBuffer(context, sizeof(gpu::ImpostorSplit), kUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                    gpu::MemoryUse::DeviceLocal, "impostor raster split");

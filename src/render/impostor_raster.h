@@ -35,7 +35,8 @@ namespace render {
 class ImpostorRaster {
 public:
     // `limitPixels`: the longest side of an impostor's screen rectangle the compute path draws
-    // (infinity: every impostor not crossing the near plane). The target must be single-sampled.
+    // (infinity: every impostor not crossing the near plane). A multisampled target gets each covered
+    // pixel in all its samples (render/raster_mode.h).
     // `resolveTilePixels`: the resolve's tile side (VisibilityResolve; 0: every pixel of the viewport).
     // `far`: which impostors the far layer takes while far-crowd is on (render/far_crowd_layer.h).
     ImpostorRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,

@@ -57,7 +57,7 @@ MeshRaster::MeshRaster(const gpu::VulkanContext& context, const GeometryPool& po
                        std::uint32_t framesInFlight, float limitPixels, std::uint32_t resolveTilePixels)
     : context_(context), pool_(pool), crowd_(crowd), lists_(lists), target_(target), limitPixels_(limitPixels),
       triangleBits_(meshRasterTriangleBits(largestTriangleCount(pool))), slots_(framesInFlight), sceneSetLayout_(sceneSetLayout) {
-    requireComputeRaster(context, target);
+    requireComputeRaster(context);
     if (triangleBits_ > 24)
         throw gpu::Error("the compute rasterizer's ids hold up to 2^24 triangles a character; a model has more",
                          gpu::ErrorKind::Unsupported);

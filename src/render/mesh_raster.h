@@ -40,7 +40,8 @@ std::uint64_t meshRasterListBytes(std::uint32_t listCapacity);
 class MeshRaster {
 public:
     // `limitPixels`: the largest pose sphere (diameter on screen) the compute path draws (infinity:
-    // every character wholly in front of the eye). The target must be single-sampled.
+    // every character wholly in front of the eye). A multisampled target gets each covered pixel in all
+    // its samples (render/raster_mode.h).
     // `resolveTilePixels`: the resolve's tile side (VisibilityResolve; 0: every pixel of the viewport).
     MeshRaster(const gpu::VulkanContext& context, const GeometryPool& pool, const CrowdBuffers& crowd,
                const DrawLists& lists, VkDescriptorSetLayout sceneSetLayout, const TargetFormat& target,

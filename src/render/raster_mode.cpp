@@ -2,7 +2,6 @@
 
 #include "gpu/error.h"
 #include "gpu/vulkan_context.h"
-#include "render/target_format.h"
 
 namespace render {
 
@@ -21,13 +20,10 @@ std::optional<RasterMode> parseRasterMode(std::string_view name) {
     return std::nullopt;
 }
 
-void requireComputeRaster(const gpu::VulkanContext& context, const TargetFormat& target) {
+void requireComputeRaster(const gpu::VulkanContext& context) {
     if (!context.int64Atomics)
         throw gpu::Error("the compute rasterizer needs the features shaderInt64 and shaderBufferInt64Atomics, which " +
                              context.description.name + " lacks or the device was created without",
-                         gpu::ErrorKind::Unsupported);
-    if (target.samples != VK_SAMPLE_COUNT_1_BIT)
-        throw gpu::Error("the compute rasterizer draws single-sampled targets only (--aa off)",
                          gpu::ErrorKind::Unsupported);
 }
 

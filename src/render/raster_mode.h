@@ -10,8 +10,6 @@ namespace gpu { class VulkanContext; }
 
 namespace render {
 
-struct TargetFormat;
-
 enum class RasterMode { Hardware, Compute, Auto };
 
 // "hardware", "compute", "auto".
@@ -19,9 +17,10 @@ const char* rasterModeName(RasterMode mode);
 std::optional<RasterMode> parseRasterMode(std::string_view name);
 
 // Throws gpu::Error(Unsupported) in one line when the compute rasterizers (impostors, meshes) cannot run:
-// the device lacks (or was created without) 64-bit integers and buffer atomics, or the target is
-// multisampled (a visibility buffer holds one sample a pixel).
-void requireComputeRaster(const gpu::VulkanContext& context, const TargetFormat& target);
+// the device lacks (or was created without) 64-bit integers and buffer atomics. A multisampled target
+// is drawn: the resolve writes a covered pixel's colour and depth to all its samples (one visibility
+// word a pixel), so what compute draws is merged by depth but its own edges are not anti-aliased.
+void requireComputeRaster(const gpu::VulkanContext& context);
 
 // Under auto, the longest side (pixels) of an impostor's screen rectangle that the compute rasterizer
 // still draws; larger ones go to the hardware path. Set from the H100's sweep (docs/compute-raster.md,

@@ -22,6 +22,7 @@ VisibilityResolve::VisibilityResolve(const gpu::VulkanContext& context, std::spa
     desc.fragmentShader = fragmentShader;
     desc.colorFormats = {target.color};
     desc.depthFormat = target.depth;
+    desc.samples = target.samples;  // a covered pixel's colour and depth go to all its samples
     desc.layout = layout;
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.blendOver = write == ResolveWrite::LayerOver;

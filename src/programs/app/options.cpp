@@ -62,7 +62,8 @@ usage: crowd-render [options]
   --raster hardware|compute|auto
                           which rasterizer draws the impostors: the hardware's, a compute pass into a
                           visibility buffer, or by size on screen (compute up to 128 px); compute needs
-                          64-bit atomics and --aa off, auto falls back to hardware (default auto)
+                          64-bit atomics, auto falls back to hardware; with --aa, what compute draws
+                          fills whole pixels (default auto)
   --mesh-raster-limit auto|PX
                           under --raster auto, characters up to PX pixels across (pose sphere) have their
                           meshes rasterized in compute every frame (methods that skin into a buffer); 0:
