@@ -179,11 +179,13 @@ typedef struct crowdgpu_renderer_settings {
     uint32_t shadow_cascades;  /* 1 to 4: the shadow map's cascades, split by distance */
     bool far_crowd;            /* impostors of 16 px or less averaged by coverage (else cut at half coverage) */
     bool ground;               /* record_characters draws the checkered ground behind the characters */
+    bool sky;                  /* and then kHorizonColor on every pixel left at the cleared depth: the host
+                                  need not clear its colour attachment (loadOp DONT_CARE) */
 } crowdgpu_renderer_settings;
 
 /* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows (casters
    at their shadow level, rasterized in compute), raster auto, impostor blend, fades, events, the far crowd
-   averaged; no ground. */
+   averaged; no ground, no sky. */
 void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* settings);
 
 typedef struct crowdgpu_frame_view {

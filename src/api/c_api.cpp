@@ -71,6 +71,7 @@ crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     r.shadowCascades = s.shadow_cascades;
     r.farCrowd = s.far_crowd;
     r.ground = s.ground;
+    r.sky = s.sky;
     return r;
 }
 
@@ -292,6 +293,7 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
     s->shadow_cascades = d.shadowCascades;
     s->far_crowd = d.farCrowd;
     s->ground = d.ground;
+    s->sky = d.sky;
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,

@@ -107,6 +107,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.impostorBlend = s.impostorBlend;
     o.farCrowd = s.farCrowd;
     o.ground = s.ground;
+    o.sky = s.sky;
     o.shadowMapSize = s.shadowMapSize;
     o.shadowRaster = internalShadowRaster(s.shadowRaster);
     o.shadowCascades = s.shadowCascades;

@@ -99,6 +99,7 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       impostorBlend_(options.impostorBlend),
       farCrowd_(options.farCrowd),
       ground_(options.ground),
+      sky_(options.sky),
       stages_(options.framesInFlight, Stage::Idle),
       views_(options.framesInFlight),
       cascades_(options.framesInFlight) {
@@ -394,6 +395,8 @@ void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     // under the characters before it is shaded (a full-screen fragment pass costs the H100's graphics
     // slice about 0.3 ms at 1080p; drawn first, its pixels under the characters were shaded for nothing).
     if (ground_) drawGround(cmd, slot);
+    // The sky where nothing opaque is, before the layer that blends over it (the far crowd stands on it).
+    if (sky_) scene_.recordSky(cmd, slot);
     // The far crowd's averaged layer, blended over everything opaque that is behind it.
     if (impostorRaster_) impostorRaster_->recordFarResolve(cmd, slot, scene_.set(slot), camera.eye, view.viewport);
     stages_[slot] = Stage::Idle;

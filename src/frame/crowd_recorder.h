@@ -8,7 +8,7 @@
 //   recordGround      inside the host's colour pass: the checkered ground (optional; refused with `ground` on)
 //   recordCharacters  inside the host's colour pass: the characters, then the impostors (hardware-drawn,
 //                     then the visibility buffer's resolve), then with `ground` on the ground behind them,
-//                     then the far crowd's blended layer
+//                     with `sky` on the sky where nothing is, then the far crowd's blended layer
 // Nothing here submits, waits or signals. A frame slot's resources (bone staging, readback of the
 // level counts, uniforms) are reused when the slot comes round again: the host must have waited for
 // that slot's previous frame first. The crowd is planned by its owner (crowd::Crowd::advanceTo).
@@ -69,6 +69,9 @@ struct RecorderOptions {
     std::uint32_t shadowMapSize = 2048;  // texels per side
     // recordCharacters draws the checkered ground after the opaque characters (crowdgpu::RendererSettings::ground).
     bool ground = false;
+    // recordCharacters ends with the sky (crowdgpu::RendererSettings::sky): every pixel nothing else drew
+    // gets the sky colour, so the host need not clear its colour target.
+    bool sky = false;
     // The shadow map's mesh casters through the graphics rasterizer or a compute pass (render/shadow_raster.h).
     render::ShadowRasterPath shadowRaster = render::ShadowRasterPath::Compute;
     // Cascades of the shadow map, split by distance (render/shadow_cascades.h): 1 to 4.
@@ -304,6 +307,7 @@ private:
     bool impostorBlend_;
     bool farCrowd_;
     bool ground_;  // recordCharacters draws the ground behind the opaque characters
+    bool sky_;     // and then the sky on every pixel left at the cleared depth
     bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded

@@ -92,7 +92,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     const bool hasDepth = desc.depthFormat != VK_FORMAT_UNDEFINED;
     depth.depthTestEnable = hasDepth;
     depth.depthWriteEnable = hasDepth && desc.depthWrite;
-    depth.depthCompareOp = VK_COMPARE_OP_LESS;
+    depth.depthCompareOp = desc.depthCompare;
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
     for (auto& blend : blends) {
         blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |

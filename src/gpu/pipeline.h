@@ -43,6 +43,7 @@ struct GraphicsPipelineDesc {
     // covering parts of pixels (the far crowd's).
     bool blendOver = false;
     bool depthWrite = true;  // with a depth attachment: the depth test passes write the fragment's depth
+    VkCompareOp depthCompare = VK_COMPARE_OP_LESS;
 };
 
 // Viewport and scissor are dynamic; rendering uses dynamic rendering with the given formats.

@@ -6,6 +6,8 @@
 
 #include "ground.frag.spv.h"
 #include "ground.vert.spv.h"
+#include "sky.frag.spv.h"
+#include "sky.vert.spv.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
 #include "render/geometry_pool.h"
@@ -62,9 +64,21 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
     desc.layout = groundLayout_;
     desc.cullMode = VK_CULL_MODE_NONE;
     groundPipeline_ = gpu::createGraphicsPipeline(context, desc);
+    gpu::GraphicsPipelineDesc sky;
+    sky.vertexShader = sky_vert_spv;
+    sky.fragmentShader = sky_frag_spv;
+    sky.colorFormats = {target.color};
+    sky.depthFormat = target.depth;
+    sky.samples = target.samples;
+    sky.layout = groundLayout_;
+    sky.cullMode = VK_CULL_MODE_NONE;
+    sky.depthWrite = false;  // the depth stays 1 there, as cleared, for whatever the host draws after
+    sky.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    skyPipeline_ = gpu::createGraphicsPipeline(context, sky);
 }
 
 ScenePass::~ScenePass() {
+    vkDestroyPipeline(context_.device, skyPipeline_, nullptr);
     vkDestroyPipeline(context_.device, groundPipeline_, nullptr);
     vkDestroyPipelineLayout(context_.device, groundLayout_, nullptr);
     for (gpu::Buffer& b : uniforms_) gpu::destroyBuffer(context_, b);
@@ -100,6 +114,12 @@ void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const
     vkCmdPushConstants(cmd, groundLayout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
                        &push);
     vkCmdDraw(cmd, 6, 1, 0, 0);
+}
+
+void ScenePass::recordSky(VkCommandBuffer cmd, std::uint32_t frameSlot) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, skyPipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundLayout_, 0, 1, &sets_[frameSlot], 0, nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
 }
 
 gpu::SceneUniforms makeSceneUniforms(const glm::mat4& viewProjection, float fogDensity,

@@ -82,6 +82,7 @@ crowdgpu::Renderer makeLibraryRenderer(const app::HostDevice& device, crowd::Cro
     settings.lodFade = options.cull.lodFade;
     settings.impostorBlend = options.impostorBlend;
     settings.farCrowd = options.farCrowd;
+    settings.sky = options.sky;
     settings.shadowMapSize = options.shadowMapSize;
     settings.shadowCascades = options.shadowCascades;
     settings.raster = options.raster == render::RasterMode::Compute ? crowdgpu::Raster::Compute

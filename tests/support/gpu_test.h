@@ -35,6 +35,7 @@ protected:
 // The programs' frame driver's options with the library's internal ones (a shared atlas, a smaller
 // target limit, an internal method), as the tests need them.
 struct RendererOptions : frame::RecorderOptions {
+    RendererOptions() { sky = true; }  // the programs' frame (app::rendererSettings): no colour clear
     VkExtent2D size{1280, 720};
     app::PassClock passClock = app::PassClock::TimestampQueries;
 };

@@ -10,10 +10,10 @@ namespace app {
 
 class HostDevice;
 
-// The programs' default, in this one place. Off: on the H100, where the raster slice is the wall, 4
-// samples cost 77 % of paper-fig4's frame with `compute` and 24 % of stress 100,000's (2 samples: 29 %
-// and 12 %), against the 15 %; every published frame time is single-sampled too. `--aa msaa4`
-// gains 3.1-3.6 dB against a 4x4 supersampled render (5.9 dB on a far crowd of impostors): what each
+// The programs' default, in this one place. Off: on the H100/H200, where the raster slice is the wall,
+// every sample is a fill: 2 samples cost 46-50 % of paper-fig4's frame with `compute` and 21 % of stress
+// 100,000 inside (4 samples: 137-142 % and 56 %), against the 15 %; every published frame time
+// is single-sampled too. `--aa msaa4` gains 2.8-3.5 dB against a 4x4 supersampled render: what each
 // count gains and costs is in docs/picture-quality.md.
 inline constexpr VkSampleCountFlagBits kDefaultSamples = VK_SAMPLE_COUNT_1_BIT;
 

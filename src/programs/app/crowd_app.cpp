@@ -163,6 +163,7 @@ crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::M
     settings.meshRasterLimit = cull.meshRasterLimit;
     settings.events = cull.events;
     settings.ground = true;  // the programs' frame: the ground behind the characters (recordCharacters)
+    settings.sky = true;     // and the sky where nothing is, so the target's colour is not cleared
     return settings;
 }
 

@@ -94,7 +94,8 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double 
     renderer_.recordShadows(cmd, slot);
     const float* horizon = crowdgpu::kHorizonColor;
     const float clear[4] = {horizon[0], horizon[1], horizon[2], 1.0f};
-    target_->beginRendering(cmd, clear);
+    // With the sky on, recordCharacters writes every pixel: no colour clear (docs/gpu-driven-frame.md).
+    target_->beginRendering(cmd, clear, renderer_.settings().sky ? ColourLoad::DrawnWhole : ColourLoad::Clear);
     renderer_.recordCharacters(cmd, slot);  // with the ground behind them (RendererSettings::ground)
     target_->endRendering(cmd);
     timer_.mark(cmd, "draw");

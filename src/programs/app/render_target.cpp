@@ -32,7 +32,7 @@ void RenderTarget::release() {
     destroyImage(device_, color_);
 }
 
-void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]) {
+void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4], ColourLoad load) {
     // The previous frame's writes (and readback copy) must finish before this frame clears.
     transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
@@ -55,7 +55,7 @@ void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]
     VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     colorAttachment.imageView = multisampled ? multisampled_.view : color_.view;
     colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    colorAttachment.loadOp = load == ColourLoad::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     if (multisampled) {
         // The average of a pixel's samples is its picture; the samples themselves are not kept.

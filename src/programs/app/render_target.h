@@ -15,6 +15,10 @@ namespace app {
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
+// How a pass begins with the colour attachment: cleared, or left as it is because what is drawn covers
+// every pixel (the library's sky, crowdgpu::RendererSettings::sky), which saves the clear's fill.
+enum class ColourLoad { Clear, DrawnWhole };
+
 class RenderTarget {
 public:
     // 4-byte colour formats only (the readback copies 4 bytes a pixel). The library's renderer must
@@ -31,8 +35,9 @@ public:
     VkSampleCountFlagBits samples() const { return samples_; }
     // The single-sample picture (resolved when multisampled).
     VkImage colorImage() const { return color_.image; }
-    // Transitions the images and begins dynamic rendering, clearing to `clearColor` (linear).
-    void beginRendering(VkCommandBuffer cmd, const float clearColor[4]);
+    // Transitions the images and begins dynamic rendering, clearing the depth and, unless `load` says
+    // the pass draws every pixel, the colour to `clearColor` (linear).
+    void beginRendering(VkCommandBuffer cmd, const float clearColor[4], ColourLoad load = ColourLoad::Clear);
     // Ends rendering (resolving the samples) and leaves the colour image ready to be copied out.
     void endRendering(VkCommandBuffer cmd);
     // Copies the last rendered frame to the host (waits for the GPU).
