@@ -78,11 +78,7 @@ test::RendererOptions rasterOptions(VkExtent2D size, render::RasterMode raster) 
 TEST_F(GpuTest, ComputeRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const model::SkinnedModel horse = test::loadModel("horse", 1);
-    crowd::LayoutOptions layout;
-    layout.count = 1200;
-    layout.weights = {3.0f, 1.0f};
-    const model::SkinnedModel* models[2] = {&soldier, &horse};
-    crowd::Crowd crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+    crowd::Crowd crowd = test::mixedCrowd(soldier, horse, 1200);
     test::RendererOptions options = rasterOptions({480, 270}, render::RasterMode::Hardware);
     test::TestRenderer hardware(*device, crowd, options);
     options.atlas = hardware.impostorAtlas();
@@ -400,11 +396,7 @@ TEST_F(GpuTest, AMultisampledFrameKeepsTheComputeRasterizer) {
     if (!(counts & VK_SAMPLE_COUNT_4_BIT)) GTEST_SKIP() << device->description.name << " cannot render 4 samples";
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const model::SkinnedModel horse = test::loadModel("horse", 1);
-    crowd::LayoutOptions layout;
-    layout.count = 1200;
-    layout.weights = {3.0f, 1.0f};
-    const model::SkinnedModel* models[2] = {&soldier, &horse};
-    crowd::Crowd crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+    crowd::Crowd crowd = test::mixedCrowd(soldier, horse, 1200);
     test::RendererOptions options = rasterOptions({480, 270}, render::RasterMode::Auto);
     options.meshRasterLimitPixels = 0.0f;
     test::TestRenderer single(*device, crowd, options);

@@ -55,14 +55,6 @@ test::RendererOptions meshOptions(VkExtent2D size, render::RasterMode raster) {
     return options;
 }
 
-// The mixed scene's crowd: 600 soldiers and horses, 3:1, on a grid.
-crowd::Crowd mixedCrowd(const model::SkinnedModel& soldier, const model::SkinnedModel& horse) {
-    crowd::LayoutOptions layout;
-    layout.count = 600;
-    layout.weights = {3.0f, 1.0f};
-    const model::SkinnedModel* models[2] = {&soldier, &horse};
-    return crowd::Crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
-}
 
 // The pose sphere in world space, as culling places it (shaders/cull.glsl.inc, worldSphere).
 glm::vec4 worldSphere(const model::SkinnedModel& model, const crowd::Character& character) {
@@ -82,7 +74,7 @@ glm::vec4 worldSphere(const model::SkinnedModel& model, const crowd::Character& 
 TEST_F(GpuTest, MeshRasterDrawsTheHardwarePictureOfAMixedCrowd) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const model::SkinnedModel horse = test::loadModel("horse", 1);
-    crowd::Crowd crowd = mixedCrowd(soldier, horse);
+    crowd::Crowd crowd = test::mixedCrowd(soldier, horse, 600);
     test::RendererOptions options = meshOptions({480, 270}, render::RasterMode::Hardware);
     test::TestRenderer hardware(*device, crowd, options);
     options.raster = render::RasterMode::Compute;
@@ -353,7 +345,7 @@ TEST_F(GpuTest, MeshRasterLimitIsChecked) {
 TEST_F(GpuTest, AutoEngagesTheMeshPathAfterAFrameOfManyTriangles) {
     const model::SkinnedModel soldier = test::loadModel("soldier", 1);
     const model::SkinnedModel horse = test::loadModel("horse", 1);
-    crowd::Crowd crowd = mixedCrowd(soldier, horse);
+    crowd::Crowd crowd = test::mixedCrowd(soldier, horse, 600);
     test::RendererOptions options = meshOptions({480, 270}, render::RasterMode::Hardware);
     test::TestRenderer hardware(*device, crowd, options);
     options.raster = render::RasterMode::Auto;

@@ -1,7 +1,7 @@
 // The sky instead of a colour clear (crowdgpu::RendererSettings::sky, docs/gpu-driven-frame.md): with
 // the sky on, the programs' target begins its pass without clearing its colour (loadOp DONT_CARE),
 // and recordCharacters colours every pixel nothing else drew. The picture must be the cleared one,
-// pixel for pixel, whatever the frame before left in the target.
+// pixel for pixel (alpha too), whatever the frame before left in the target.
 #include <cstdio>
 #include <vector>
 
@@ -29,7 +29,9 @@ std::vector<app::Rgba8Image> renderViews(const gpu::VulkanContext& context, cons
     options.size = kSize;
     options.method = skin::Method::Compute;
     options.cull.impostors = true;
-    options.raster = render::RasterMode::Auto;
+    // Multisampled, the impostors on the hardware: their sample masks must leave every sample's alpha
+    // written (alpha to coverage did not: with no clear it was undefined).
+    options.raster = samples == VK_SAMPLE_COUNT_1_BIT ? render::RasterMode::Auto : render::RasterMode::Hardware;
     options.target.samples = samples;
     options.framesInFlight = 1;
     options.sky = sky;

@@ -87,7 +87,6 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     raster.depthBiasSlopeFactor = desc.depthBiasSlope;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = desc.samples;
-    multisample.alphaToCoverageEnable = desc.alphaToCoverage;
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     const bool hasDepth = desc.depthFormat != VK_FORMAT_UNDEFINED;
     depth.depthTestEnable = hasDepth;
@@ -96,7 +95,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
     for (auto& blend : blends) {
         blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                               (desc.alphaToCoverage ? 0 : VK_COLOR_COMPONENT_A_BIT);
+                               VK_COLOR_COMPONENT_A_BIT;
         if (desc.blendOver) {
             blend.blendEnable = VK_TRUE;
             blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;

@@ -35,10 +35,6 @@ struct GraphicsPipelineDesc {
     std::vector<std::uint32_t> vertexConstants;
     // And of the fragment stage.
     std::vector<std::uint32_t> fragmentConstants;
-    // Each sample's coverage from the alpha of the fragment's first output (multisampled targets):
-    // cut-out edges as smooth as geometry's, in any draw order, with depth. That alpha is a coverage,
-    // not a colour, so it is not written: the target keeps the alpha it was cleared to.
-    bool alphaToCoverage = false;
     // The fragment's colour blended over the target's by its alpha (the target's alpha kept): a layer
     // covering parts of pixels (the far crowd's).
     bool blendOver = false;

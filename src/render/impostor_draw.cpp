@@ -76,16 +76,16 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
         desc.depthFormat = target.depth;
         desc.samples = target.samples;
         // Multisampled, a texel's coverage in the atlas becomes the share of the pixel's samples it
-        // covers (as a mesh's edge does), with no sorting, unlike blending. Single-sampled, coverage
-        // would be a dither of one sample: the shader cuts at half instead.
-        desc.alphaToCoverage = target.samples != VK_SAMPLE_COUNT_1_BIT;
+        // covers (as a mesh's edge does), with no sorting, unlike blending: the shader's sample mask
+        // (impostor.frag.glsl). Single-sampled, coverage would be a dither of one sample: it cuts at half.
+        const std::uint32_t samples = static_cast<std::uint32_t>(target.samples);
         desc.layout = layout_;
         desc.cullMode = VK_CULL_MODE_NONE;  // a quad facing the eye: its winding is not worth deriving
         // One pipeline of each pass per impostor-blend setting (the shaders' BLEND / kBlend): blended
         // cells, or the nearest cell with one fetch.
         for (std::uint32_t blend = 0; blend < 2; ++blend) {
             desc.vertexConstants = {0u, blend};
-            desc.fragmentConstants = {desc.alphaToCoverage ? 1u : 0u, blend};
+            desc.fragmentConstants = {samples, blend};
             pipeline_[blend] = gpu::createGraphicsPipeline(context, desc);
             // The shadow map's: depth only, the quad facing the light, biased as the meshes' shadows are.
             gpu::GraphicsPipelineDesc shadow = desc;
@@ -93,7 +93,6 @@ ImpostorDraw::ImpostorDraw(const gpu::VulkanContext& context, const GeometryPool
             shadow.colorFormats = {};
             shadow.depthFormat = kShadowFormat;
             shadow.samples = VK_SAMPLE_COUNT_1_BIT;
-            shadow.alphaToCoverage = false;  // no colour, one sample: its shader cuts the quad at half coverage
             shadow.fragmentConstants = {0u, blend};
             shadow.depthBiasConstant = 1.0f;
             shadow.depthBiasSlope = 1.5f;

@@ -64,14 +64,10 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
     desc.layout = groundLayout_;
     desc.cullMode = VK_CULL_MODE_NONE;
     groundPipeline_ = gpu::createGraphicsPipeline(context, desc);
-    gpu::GraphicsPipelineDesc sky;
+    gpu::GraphicsPipelineDesc sky = desc;  // the same target and layout
     sky.vertexShader = sky_vert_spv;
     sky.fragmentShader = sky_frag_spv;
-    sky.colorFormats = {target.color};
-    sky.depthFormat = target.depth;
-    sky.samples = target.samples;
-    sky.layout = groundLayout_;
-    sky.cullMode = VK_CULL_MODE_NONE;
+    sky.fragmentConstants = {};
     sky.depthWrite = false;  // the depth stays 1 there, as cleared, for whatever the host draws after
     sky.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
     skyPipeline_ = gpu::createGraphicsPipeline(context, sky);

@@ -120,6 +120,14 @@ gpu::CullUniforms TestRenderer::cullUniforms() const {
     return recorder().cullUniforms(render::frameViewOf(internalCamera(camera), extent(), 0.0f));
 }
 
+crowd::Crowd mixedCrowd(const model::SkinnedModel& soldier, const model::SkinnedModel& horse, std::uint32_t count) {
+    crowd::LayoutOptions layout;
+    layout.count = count;
+    layout.weights = {3.0f, 1.0f};
+    const model::SkinnedModel* models[2] = {&soldier, &horse};
+    return crowd::Crowd({&soldier, &horse}, crowd::gridLayout(models, layout));
+}
+
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const app::SceneOptions& scene) {
     crowd::LayoutOptions layout;
     layout.count = scene.count;

@@ -72,6 +72,8 @@ public:
     gpu::CullUniforms cullUniforms() const;
 };
 
+// The mixed scene's crowd: `count` soldiers and horses, 3:1, on a grid.
+crowd::Crowd mixedCrowd(const model::SkinnedModel& soldier, const model::SkinnedModel& horse, std::uint32_t count);
 // The programs' crowd layout (app::buildCrowd) as internal characters of one model.
 std::vector<crowd::Character> buildCharacters(const model::SkinnedModel& model, const app::SceneOptions& scene);
 // Where an internal crowd stands, for the programs' camera paths.
