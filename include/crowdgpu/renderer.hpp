@@ -147,9 +147,9 @@ struct RendererSettings {
     // recordCharacters ends by colouring every pixel still at the cleared depth with kHorizonColor (a
     // triangle at the far plane, tested less-or-equal, depth not written), before the far crowd's layer:
     // every pixel of the viewport is then written, so the host can begin its pass with the colour
-    // attachment's loadOp DONT_CARE instead of a clear. On the H100's graphics slice a 1080p colour
-    // clear costs 0.15 ms a sample per pixel; the sky costs that only where it shows (docs/
-    // gpu-driven-frame.md, "The sky instead of a colour clear"). Off: the host clears (to kHorizonColor
+    // attachment's loadOp DONT_CARE instead of a clear. On an H200's graphics slice (the H100's) a
+    // 1080p colour clear costs 0.15 ms a sample per pixel; the sky costs that only where it shows
+    // (docs/gpu-driven-frame.md, "The sky instead of a colour clear"). Off: the host clears (to kHorizonColor
     // for a seamless horizon) or draws its own background, which with the sky on would be painted over
     // unless it writes depth.
     bool sky = false;

@@ -61,9 +61,10 @@ public:
     void updateLight(std::uint32_t frameSlot, std::uint32_t cascade, const gpu::SceneUniforms& uniforms);
     void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
     // The sky colour (kSkyColor) on every pixel still at the cleared depth: after everything opaque, it
-    // writes the pixels a colour clear would have, so the host need not clear its colour target. On the
-    // H100's graphics slice a colour clear costs 0.15 ms a sample per pixel at 1080p; the sky costs as
-    // much only where it shows (docs/gpu-driven-frame.md, "The sky instead of a colour clear").
+    // writes the pixels a colour clear would have, so the host need not clear its colour target. On an
+    // H200's graphics slice (the H100's) a colour clear costs 0.15 ms a sample per pixel at 1080p; the
+    // sky costs as much only where it shows (docs/gpu-driven-frame.md, "The sky instead of a colour
+    // clear").
     void recordSky(VkCommandBuffer cmd, std::uint32_t frameSlot) const;
 
 private:
