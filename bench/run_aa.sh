@@ -126,13 +126,13 @@ done
       echo "each character at the level the 1x frame draws it, so that what differs is sampling, dB:"
     fi
     printf "%-14s %-10s" picture size
-    for aa in "${levels[@]}"; do printf " %8s" "$aa"; done
+    for aa in "${levels[@]}"; do printf " %11s" "$aa"; done
     echo
     for entry in "${pictures[@]}"; do
       IFS='|' read -r name flags picture_size <<<"$entry"
       printf "%-14s %-10s" "$name" "$picture_size"
       for aa in "${levels[@]}"; do
-        printf " %8s" "$(sed -n 's/^PSNR \([^ ]*\) dB.*/\1/p' "$res/$name-$aa-$reference.psnr" 2>/dev/null)"
+        printf " %11s" "$(sed -n 's/^PSNR \([^ ]*\) dB.*/\1/p' "$res/$name-$aa-$reference.psnr" 2>/dev/null)"
       done
       echo
     done
@@ -141,7 +141,8 @@ done
   echo "Cost: crowd-bench medians over $frames frames after $warmup warm-up at $bench_size, ms; gpu: its GPU total"
   echo "($(csv_value "$res/bench-paper-fig4-compute-off-1.csv" pass_clock)), draw: its draw pass (the colour pass), frame: wall clock"
   echo "between frame starts, two frames in flight; +%: against --aa off of the same round."
-  printf "%-10s %-8s %-6s %1s | %8s %7s | %8s %7s | %8s %7s\n" scene method aa r gpu "+%" draw "+%" frame "+%"
+  echo "filter: the edge filter's pass (--aa fxaa)."
+  printf "%-10s %-8s %-10s %1s | %8s %7s | %8s %7s | %8s %7s | %6s\n" scene method aa r gpu "+%" draw "+%" frame "+%" filter
   for round in 1 2; do
     for scene in paper-fig4 stress; do
       for method in compute two-pass; do
@@ -150,13 +151,14 @@ done
         base_frame=$(csv_value "$base" median_frame_ms)
         for aa in "${levels[@]}"; do
           csv=$res/bench-$scene-$method-$aa-$round.csv
-          gpu='' draw='' frame=''
+          gpu='' draw='' frame='' filter=''
           if [[ $(csv_value "$csv" status) == ok ]]; then  # a skipped row has zeros
             gpu=$(csv_value "$csv" gpu_total_ms) draw=$(csv_value "$csv" gpu_draw_ms) frame=$(csv_value "$csv" median_frame_ms)
+            filter=$(csv_value "$csv" gpu_edge_filter_ms)
           fi
-          printf "%-10s %-8s %-6s %1s | %8s %7s | %8s %7s | %8s %7s\n" "$scene" "$method" "$aa" "$round" \
+          printf "%-10s %-8s %-10s %1s | %8s %7s | %8s %7s | %8s %7s | %6s\n" "$scene" "$method" "$aa" "$round" \
             "${gpu:--}" "$(percent "$base_gpu" "$gpu")" "${draw:--}" "$(percent "$base_draw" "$draw")" \
-            "${frame:--}" "$(percent "$base_frame" "$frame")"
+            "${frame:--}" "$(percent "$base_frame" "$frame")" "${filter:--}"
         done
       done
     done

@@ -349,6 +349,10 @@ int main(void) {
            "record_characters before record_compute");
     EXPECT(strlen(crowdgpu_last_error()) > 0, "no message for the wrong order");
     printf("wrong order: %s\n", crowdgpu_last_error());
+    VkExtent2D filterExtent = {64, 64};
+    EXPECT(crowdgpu_renderer_record_edge_filter(renderer, commands[0], 0, VK_NULL_HANDLE, VK_NULL_HANDLE,
+                                                filterExtent) == CROWDGPU_ERROR_WRONG_ORDER,
+           "record_edge_filter without the edge_filter setting");
 
     /* Setup: recorded, submitted, waited for. */
     VkCommandBufferBeginInfo begin = {VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -432,6 +433,23 @@ TEST_F(GpuTest, LibraryRefusesBadUseWithOneClearError) {
                         [&] { renderer.recordCompute(cmd, 0, wide); });
             renderer.recordCompute(cmd, 0, view);
             expectError(crowdgpu::ErrorCode::WrongOrder, "recordShadows", [&] { renderer.recordCharacters(cmd, 0); });
+            // The edge filter, asked of a renderer made without it.
+            expectError(crowdgpu::ErrorCode::WrongOrder, "edgeFilter",
+                        [&] { renderer.recordEdgeFilter(cmd, 0, VK_NULL_HANDLE, VK_NULL_HANDLE, {64, 64}); });
+        });
+    }
+    {  // the edge filter with views it cannot use, or a slot that does not exist
+        crowdgpu::RendererSettings settings;
+        settings.edgeFilter = true;
+        crowdgpu::Renderer renderer(host.device, crowd, settings);
+        const auto view = reinterpret_cast<VkImageView>(std::uintptr_t{1});  // never reached: refused first
+        gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "different destination",
+                        [&] { renderer.recordEdgeFilter(cmd, 0, view, view, {64, 64}); });
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "source view",
+                        [&] { renderer.recordEdgeFilter(cmd, 0, VK_NULL_HANDLE, view, {64, 64}); });
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "slot 2",
+                        [&] { renderer.recordEdgeFilter(cmd, 2, view, VK_NULL_HANDLE, {64, 64}); });
         });
     }
     {  // a crowd larger than the device's memory, refused before anything is allocated

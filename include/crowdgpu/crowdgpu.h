@@ -181,11 +181,12 @@ typedef struct crowdgpu_renderer_settings {
     bool ground;               /* record_characters draws the checkered ground behind the characters */
     bool sky;                  /* and then kHorizonColor on every pixel left at the cleared depth: the host
                                   need not clear its colour attachment (loadOp DONT_CARE) */
+    bool edge_filter;          /* record_edge_filter anti-aliases the finished picture in compute */
 } crowdgpu_renderer_settings;
 
 /* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows (casters
    at their shadow level, rasterized in compute), raster auto, impostor blend, fades, events, the far crowd
-   averaged; no ground, no sky. */
+   averaged; no ground, no sky, no edge filter. */
 void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* settings);
 
 typedef struct crowdgpu_frame_view {
@@ -210,6 +211,10 @@ crowdgpu_result crowdgpu_renderer_record_compute(crowdgpu_renderer renderer, VkC
 crowdgpu_result crowdgpu_renderer_record_shadows(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
 crowdgpu_result crowdgpu_renderer_record_ground(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
 crowdgpu_result crowdgpu_renderer_record_characters(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
+/* After the colour pass, with edge_filter: `source` sampled, `destination` an R8G8B8A8_UNORM storage view
+   (Renderer::recordEdgeFilter says the layouts and barriers). */
+crowdgpu_result crowdgpu_renderer_record_edge_filter(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot,
+                                                     VkImageView source, VkImageView destination, VkExtent2D extent);
 void crowdgpu_renderer_destroy(crowdgpu_renderer renderer);
 
 #ifdef __cplusplus

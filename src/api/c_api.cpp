@@ -72,6 +72,7 @@ crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     r.farCrowd = s.far_crowd;
     r.ground = s.ground;
     r.sky = s.sky;
+    r.edgeFilter = s.edge_filter;
     return r;
 }
 
@@ -294,6 +295,7 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
     s->far_crowd = d.farCrowd;
     s->ground = d.ground;
     s->sky = d.sky;
+    s->edge_filter = d.edgeFilter;
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
@@ -352,6 +354,12 @@ crowdgpu_result crowdgpu_renderer_record_ground(crowdgpu_renderer r, VkCommandBu
 crowdgpu_result crowdgpu_renderer_record_characters(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot) {
     if (!r) return invalid("crowdgpu_renderer_record_characters: renderer is NULL");
     return guarded([&] { r->renderer.recordCharacters(cmd, slot); });
+}
+
+crowdgpu_result crowdgpu_renderer_record_edge_filter(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot,
+                                                     VkImageView source, VkImageView destination, VkExtent2D extent) {
+    if (!r) return invalid("crowdgpu_renderer_record_edge_filter: renderer is NULL");
+    return guarded([&] { r->renderer.recordEdgeFilter(cmd, slot, source, destination, extent); });
 }
 
 void crowdgpu_renderer_destroy(crowdgpu_renderer r) { delete r; }

@@ -218,6 +218,9 @@ Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::Re
         frame::RecorderOptions withOwner = options;
         withOwner.contextOwner = data->context;  // a shared atlas may outlive this renderer
         data->frame = std::make_unique<frame::CrowdRecorder>(*data->context, crowd, withOwner);
+        if (settings.edgeFilter)
+            data->edgeFilter = std::make_unique<render::EdgeFilter>(
+                *data->context, render::isSrgbFormat(settings.target.color), settings.framesInFlight);
     });
     return Renderer(std::move(data));
 }
@@ -271,6 +274,20 @@ void Renderer::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
     detail::translated([&] { data_->frame->recordCharacters(cmd, slot); });
 }
 
+void Renderer::recordEdgeFilter(VkCommandBuffer cmd, std::uint32_t slot, VkImageView source, VkImageView destination,
+                                VkExtent2D extent) {
+    if (!data_->edgeFilter)
+        throw Error(ErrorCode::WrongOrder, "recordEdgeFilter: the renderer was made without RendererSettings::edgeFilter");
+    if (slot >= data_->settings.framesInFlight)
+        throw Error(ErrorCode::InvalidArgument, "recordEdgeFilter: frame slot " + std::to_string(slot) + " out of range");
+    if (!source || !destination || source == destination)
+        throw Error(ErrorCode::InvalidArgument, "recordEdgeFilter: needs a source view and a different destination view");
+    if (extent.width == 0 || extent.height == 0)
+        throw Error(ErrorCode::InvalidArgument, "recordEdgeFilter: the extent is empty");
+    detail::translated([&] { data_->edgeFilter->record(cmd, slot, source, destination, extent); });
+    gpu::passDone(data_->passes, cmd, "edge filter");
+}
+
 FrameOutput Renderer::output() const {
     const frame::FrameOutput o = data_->frame->output();
     FrameOutput out;
@@ -306,7 +323,10 @@ FrameCounts Renderer::counts(std::uint32_t slot) const {
     return result;
 }
 
-void Renderer::setPassObserver(PassObserver observer) { data_->frame->setPassObserver(std::move(observer)); }
+void Renderer::setPassObserver(PassObserver observer) {
+    data_->passes = observer;
+    data_->frame->setPassObserver(std::move(observer));
+}
 
 void Renderer::setMethod(Method method) {
     detail::translated([&] {

@@ -4,7 +4,9 @@
 
 #include "crowdgpu/renderer.hpp"
 #include "frame/crowd_recorder.h"
+#include "gpu/pass_observer.h"
 #include "gpu/vulkan_context.h"
+#include "render/edge_filter.h"
 
 namespace crowdgpu::detail {
 
@@ -12,6 +14,8 @@ struct RendererData {
     std::shared_ptr<gpu::VulkanContext> context;  // wraps the host's device; owns nothing of it
     RendererSettings settings;
     std::unique_ptr<frame::CrowdRecorder> frame;
+    std::unique_ptr<render::EdgeFilter> edgeFilter;  // with settings.edgeFilter
+    gpu::PassObserver passes;                        // the recorder's, for the edge filter's pass
 };
 
 // A renderer with every internal option (a shared impostor atlas, a smaller target limit): the

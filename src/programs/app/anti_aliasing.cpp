@@ -8,6 +8,8 @@ namespace {
 
 constexpr VkSampleCountFlagBits kChoices[] = {VK_SAMPLE_COUNT_1_BIT, VK_SAMPLE_COUNT_2_BIT, VK_SAMPLE_COUNT_4_BIT,
                                               VK_SAMPLE_COUNT_8_BIT};
+// The edge filter's name: FXAA is what users know the method by (this one is the library's own code).
+constexpr const char* kEdgeFilterName = "fxaa";
 
 }  // namespace
 
@@ -21,10 +23,17 @@ const char* antiAliasingName(VkSampleCountFlagBits samples) {
     }
 }
 
-VkSampleCountFlagBits parseAntiAliasing(const std::string& flag, const std::string& text) {
-    for (VkSampleCountFlagBits samples : kChoices)
-        if (text == antiAliasingName(samples)) return samples;
-    throw Error(flag + ": '" + text + "' is not off, msaa2, msaa4 or msaa8");
+std::string antiAliasingName(AntiAliasing antiAliasing) {
+    if (!antiAliasing.edgeFilter) return antiAliasingName(antiAliasing.samples);
+    if (antiAliasing.samples == VK_SAMPLE_COUNT_1_BIT) return kEdgeFilterName;
+    return antiAliasingName(antiAliasing.samples) + std::string("+") + kEdgeFilterName;
+}
+
+AntiAliasing parseAntiAliasing(const std::string& flag, const std::string& text) {
+    for (const bool edgeFilter : {false, true})
+        for (VkSampleCountFlagBits samples : kChoices)
+            if (text == antiAliasingName(AntiAliasing{samples, edgeFilter})) return {samples, edgeFilter};
+    throw Error(flag + ": '" + text + "' is not off, msaa2, msaa4, msaa8, fxaa or msaaN+fxaa");
 }
 
 void checkAntiAliasing(const HostDevice& device, VkSampleCountFlagBits samples) {

@@ -98,7 +98,7 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
             "gpu_total_ms,pass_clock,skin_vertices_per_s,"
             "cpu_animate_ms,cpu_record_ms,memory_bytes,frames,warmup,width,height,device,driver,commit,date,"
             "scene,culling,visible_lod0,visible_lod1,visible_lod2,triangles_drawn,animation,shadow_triangles,shadow_impostors,aa,"
-            "impostors,gpu_raster_ms,raster\n";
+            "impostors,gpu_raster_ms,raster,gpu_edge_filter_ms\n";
     for (const BenchResult& r : results) {
         file << r.model << ',' << r.method << ',' << r.count << ',' << r.vertices << ',' << r.triangles << ','
              << (r.ok ? "ok" : "skipped") << ',' << r.frame.medianFrameMs << ',' << r.frame.p95FrameMs << ','
@@ -111,7 +111,8 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
              << r.frame.culling << "\"," << r.frame.medianVisible[0] << ',' << r.frame.medianVisible[1] << ','
              << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << ",\"" << r.frame.animation << "\","
              << r.frame.medianShadowTriangles << ',' << r.frame.medianShadowImpostors << ',' << r.frame.antiAliasing << ','
-             << r.frame.medianImpostors << ',' << passMs(r, "raster") << ',' << r.frame.raster << '\n';
+             << r.frame.medianImpostors << ',' << passMs(r, "raster") << ',' << r.frame.raster << ','
+             << passMs(r, "edge filter") << '\n';
     }
     io::writeFile(path, file.str());
 }
@@ -192,6 +193,7 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["aa"] = r.frame.antiAliasing;
         row["raster"] = r.frame.raster;
         row["gpu_raster_ms"] = passMs(r, "raster");
+        row["gpu_edge_filter_ms"] = passMs(r, "edge filter");  // --aa fxaa
         row["animation"] = r.frame.animation;
         row["median_visible_per_lod"] = {r.frame.medianVisible[0], r.frame.medianVisible[1], r.frame.medianVisible[2]};
         row["median_triangles"] = r.frame.medianTriangles;

@@ -18,7 +18,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     app::RendererOptions rendererOptions;
     static_cast<crowdgpu::RendererSettings&>(rendererOptions) =
         rendererSettings(options.scene.cull, options.method, options.scene.animation, options.scene.shadows,
-                         options.scene.meshCapacity, options.scene.samples);
+                         options.scene.meshCapacity, options.scene.antiAliasing);
     rendererOptions.impostorsFrom = options.impostorsFrom;
     rendererOptions.size = options.size;
     rendererOptions.passClock = options.passClock;
@@ -40,7 +40,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
                       (options.scene.cull.lod ? "on" : "off") + shadowSummary(options.scene) + impostorSummary(options.scene);
     summary.animation = std::string(crowdgpu::behaviourName(scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.scene.animation) + " animation";
-    summary.antiAliasing = antiAliasingName(options.scene.samples);
+    summary.antiAliasing = antiAliasingName(options.scene.antiAliasing);
     summary.raster = crowdgpu::rasterName(options.scene.cull.raster);
     summary.model = modelNames(models);
     summary.method = crowdgpu::methodName(options.method);

@@ -139,9 +139,10 @@ crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene)
 
 crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::Method method,
                                             crowdgpu::Animation animation, bool shadows, std::uint32_t meshCapacity,
-                                            VkSampleCountFlagBits samples) {
+                                            AntiAliasing antiAliasing) {
     crowdgpu::RendererSettings settings;
-    settings.target.samples = samples;
+    settings.target.samples = antiAliasing.samples;
+    settings.edgeFilter = antiAliasing.edgeFilter;
     settings.method = method;
     settings.animation = animation;
     settings.culling = cull.mode;
@@ -176,7 +177,7 @@ std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd
     const std::uint64_t visibility = settings.impostors && settings.raster != crowdgpu::Raster::Hardware
                                          ? std::uint64_t{size.width} * size.height * perPixel * settings.framesInFlight
                                          : 0u;
-    return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + renderTargetBytes(size, settings.target.samples) +
+    return crowdgpu::memoryNeeded(device.physicalDevice, crowd, settings) + renderTargetBytes(size, settings.target.samples, settings.edgeFilter) +
            visibility;
 }
 
@@ -197,7 +198,7 @@ void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, cons
     const std::uint64_t available = device.deviceLocalBytes();
     if (needed > available)
         throw Error(describeShortfall({crowd.size(), size, crowdgpu::methodName(settings.method), needed,
-                                       renderTargetBytes(size, settings.target.samples), available, device.description.name}));
+                                       renderTargetBytes(size, settings.target.samples, settings.edgeFilter), available, device.description.name}));
     const crowdgpu::DeviceLimitCheck limits = crowdgpu::checkDeviceLimits(device.physicalDevice, crowd, settings);
     if (limits.problem.empty()) {
         checkViewport(device, settings, size);

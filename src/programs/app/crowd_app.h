@@ -51,10 +51,10 @@ CrowdModels loadModels(const std::string& list, std::uint32_t seed, std::vector<
 crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene);
 
 // The library's settings for the programs' options (the render target's formats are the library's
-// defaults, which the programs' target uses; `samples` is --aa's).
+// defaults, which the programs' target uses; `antiAliasing` is --aa's).
 crowdgpu::RendererSettings rendererSettings(const CullOptions& cull, crowdgpu::Method method,
                                             crowdgpu::Animation animation, bool shadows, std::uint32_t meshCapacity,
-                                            VkSampleCountFlagBits samples);
+                                            AntiAliasing antiAliasing);
 
 // Device memory a run takes: the library's memoryNeeded for the crowd and settings, and the
 // programs' render target of `size`.

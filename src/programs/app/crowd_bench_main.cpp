@@ -52,7 +52,8 @@ usage: crowd-bench [options]
   --events on|off      the GPU event buffer of the characters in view (default on; pass "events")
   --props on|off       soldiers carry their rifle (and one in eight a flag); off: the soldier without
                        props (default on; docs/props.md)
-  --aa off|msaa2|msaa4|msaa8  anti-aliasing samples per pixel (default: crowd-render's; Table 1: off)
+  --aa off|msaa2|msaa4|msaa8|fxaa|msaaN+fxaa  anti-aliasing, as in crowd-render (default: crowd-render's;
+                       Table 1: off)
   --raster hardware|compute|auto  the impostors' rasterizer, as in crowd-render (default auto)
   --behaviour NAME     in-place, march or mill (default: the scene's; Table 1: in-place)
   --animation cpu|gpu  bone matrices from CPU jobs or GPU passes (default gpu)
@@ -178,7 +179,7 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         o.scene.scene.scene = "table-1";
         if (!given(args, "--cull")) o.scene.cull.mode = crowdgpu::Culling::Off;
         if (!given(args, "--lod")) o.scene.cull.lod = false;
-        if (!given(args, "--aa")) o.scene.samples = VK_SAMPLE_COUNT_1_BIT;
+        if (!given(args, "--aa")) o.scene.antiAliasing = {};
     }
     // Defaults of --quick and --palette; flags given anywhere on the line win over them.
     const bool countsGiven = given(args, "--counts"), framesGiven = given(args, "--frames"),
@@ -218,7 +219,7 @@ app::BenchResult measure(const app::HostDevice& context, const app::CrowdModels&
     result.count = count;
     result.vertices = model.vertexCount();
     result.triangles = model.triangleCount();
-    result.frame.antiAliasing = app::antiAliasingName(options.scene.samples);  // also on a skipped row
+    result.frame.antiAliasing = app::antiAliasingName(options.scene.antiAliasing);  // also on a skipped row
     result.frame.raster = crowdgpu::rasterName(options.scene.cull.raster);
     app::ScenarioOptions scenario;
     scenario.scene = options.scene;
@@ -316,7 +317,7 @@ int run(const BenchOptions& options, const std::string& command) {
     checkHostMemory(crowds, options);
     app::HostDevice context({options.validation, options.device, {}, false});
     // Once, before any row: a sample count the device lacks would otherwise skip every configuration.
-    if (!options.palette) app::checkAntiAliasing(context, options.scene.samples);
+    if (!options.palette) app::checkAntiAliasing(context, options.scene.antiAliasing.samples);
     const bool fencePasses = options.passClock == "fence" ||
                              (options.passClock == "auto" && !app::timestampsBracketAllWork(context));
     std::fprintf(stderr, "crowd-bench on %s (%s); per-pass clock: %s\n", context.description.name.c_str(),
@@ -349,7 +350,7 @@ int run(const BenchOptions& options, const std::string& command) {
                 options.scene.cull.lod ? "on" : "off", options.scene.cull.lodFade ? "on" : "off",
                 options.scene.cull.impostorBlend ? "on" : "off", options.scene.cull.farCrowd ? "average" : "off",
                 options.scene.shadows ? "on" : "off",
-                app::antiAliasingName(options.scene.samples), app::cameraPathName(options.scene.camera),
+                app::antiAliasingName(options.scene.antiAliasing).c_str(), app::cameraPathName(options.scene.camera),
                 options.scene.startSeconds);
     app::printTable1(results, modelNames, options.methods, options.counts);
     app::printPassTable(results);

@@ -103,7 +103,7 @@ int run(const app::RenderOptions& options) {
     app::RendererOptions rendererOptions;
     static_cast<crowdgpu::RendererSettings&>(rendererOptions) =
         app::rendererSettings(options.cull, options.method, options.animation, options.shadows, options.meshCapacity,
-                              options.samples);
+                              options.antiAliasing);
     rendererOptions.size = options.size;
     app::checkCrowdFits(context, crowd, rendererOptions, options.size);
     app::CrowdRenderer renderer(context, crowd, rendererOptions);
@@ -126,7 +126,7 @@ int run(const app::RenderOptions& options) {
                       app::shadowSummary(options) + app::impostorSummary(options);
     summary.animation = std::string(crowdgpu::behaviourName(options.scene.behaviour)) + ", " +
                         crowdgpu::animationName(options.animation) + " animation";
-    summary.antiAliasing = app::antiAliasingName(options.samples);
+    summary.antiAliasing = app::antiAliasingName(options.antiAliasing);
     summary.raster = crowdgpu::rasterName(options.cull.raster);
     summary.model = app::modelNames(models);
     summary.method = crowdgpu::methodName(options.method);

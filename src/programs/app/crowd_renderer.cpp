@@ -25,7 +25,7 @@ CrowdRenderer::CrowdRenderer(const HostDevice& device, crowdgpu::Crowd& crowd, c
     : device_(device),
       crowd_(crowd),
       renderer_(std::move(renderer)),
-      target_(std::make_unique<RenderTarget>(device, size, renderer_.settings().target)),
+      target_(std::make_unique<RenderTarget>(device, size, renderer_.settings().target, renderer_.settings().edgeFilter)),
       timer_(device, renderer_.settings().framesInFlight, passClock),
       frames_(renderer_.settings().framesInFlight) {
     camera = frameCrowd(crowdShape(crowd), static_cast<float>(size.width) / static_cast<float>(size.height));
@@ -99,6 +99,10 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double 
     renderer_.recordCharacters(cmd, slot);  // with the ground behind them (RendererSettings::ground)
     target_->endRendering(cmd);
     timer_.mark(cmd, "draw");
+    if (target_->edgeFiltered()) {  // --aa fxaa: the picture anti-aliased in compute (its pass: "edge filter")
+        renderer_.recordEdgeFilter(cmd, slot, target_->filterSource(), target_->filterDestination(), target_->extent());
+        target_->endFiltering(cmd);
+    }
     if (hooks && hooks->recordAfterScene) hooks->recordAfterScene(cmd, target_->colorImage(), target_->extent());
 }
 
@@ -134,7 +138,8 @@ void CrowdRenderer::waitIdle() {
 void CrowdRenderer::resize(VkExtent2D size) {
     waitIdle();
     target_.reset();
-    target_ = std::make_unique<RenderTarget>(device_, size, renderer_.settings().target);
+    target_ = std::make_unique<RenderTarget>(device_, size, renderer_.settings().target,
+                                             renderer_.settings().edgeFilter);
 }
 
 void CrowdRenderer::setMethod(crowdgpu::Method method) {

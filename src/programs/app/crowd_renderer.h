@@ -3,7 +3,7 @@
 // device (app::HostDevice), command buffers, fences, the offscreen target, the pass timer and the
 // statistics — and draws each frame through crowdgpu::Renderer's public record calls:
 // plan (Crowd::advanceTo) -> recordCompute -> recordShadows -> begin the target's pass -> recordCharacters
-// (with the ground behind them: RendererSettings::ground) -> end -> submit. A presenter (the viewer)
+// (with the ground behind them: RendererSettings::ground) -> end -> [recordEdgeFilter] -> submit. A presenter (the viewer)
 // adds its commands through PresentHooks.
 #include <cstdint>
 #include <functional>

@@ -31,7 +31,8 @@ bool isDepth(VkFormat format) {
 }  // namespace
 
 HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                      const std::string& what, VkSampleCountFlagBits samples) {
+                      const std::string& what, VkSampleCountFlagBits samples, VkFormat viewFormat) {
+    const bool otherView = viewFormat != VK_FORMAT_UNDEFINED && viewFormat != format;
     HostImage image;
     image.extent = extent;
     image.format = format;
@@ -45,6 +46,7 @@ HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat form
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (otherView) info.flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT | VK_IMAGE_CREATE_EXTENDED_USAGE_BIT;
     try {
         check(vkCreateImage(device.device, &info, nullptr, &image.image), "vkCreateImage");
         VkMemoryRequirements requirements;
@@ -55,7 +57,7 @@ HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat form
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = image.image;
         viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        viewInfo.format = format;
+        viewInfo.format = otherView ? viewFormat : format;
         viewInfo.subresourceRange = {isDepth(format) ? VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT)
                                                      : VkImageAspectFlags(VK_IMAGE_ASPECT_COLOR_BIT),
                                      0, 1, 0, 1};

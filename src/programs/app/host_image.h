@@ -19,9 +19,12 @@ struct HostImage {
     VkDeviceSize bytes = 0;
 };
 // A device-local 2D image of `samples` per pixel; a depth format gets a depth view. Throws Error
-// naming `what` when the device has no memory for it.
+// naming `what` when the device has no memory for it. `viewFormat`, when given, is the view's format
+// instead of the image's (a UNORM view of an sRGB image, for storage: the image is made mutable, its
+// usage checked against the view's format).
 HostImage createImage(const HostDevice& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                      const std::string& what, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
+                      const std::string& what, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT,
+                      VkFormat viewFormat = VK_FORMAT_UNDEFINED);
 void destroyImage(const HostDevice& device, HostImage& image);
 
 struct ReadbackBuffer {

@@ -56,9 +56,10 @@ usage: crowd-render [options]
                           default compute)
   --shadow-cascades N     the shadow map's cascades, 1 to 4, split by distance: near shadows get finer
                           texels, far ones coarser, for a cost; 1: one map over the whole view (default 1)
-  --aa off|msaa2|msaa4|msaa8
+  --aa off|msaa2|msaa4|msaa8|fxaa|msaaN+fxaa
                           anti-aliasing: 2, 4 or 8 samples per pixel for the characters, impostors
-                          and ground, averaged into the picture (default %AA%)
+                          and ground, averaged into the picture; fxaa: an edge filter over the
+                          finished picture, in compute; or both (default %AA%)
   --raster hardware|compute|auto
                           which rasterizer draws the impostors: the hardware's, a compute pass into a
                           visibility buffer, or by size on screen (compute up to 128 px); compute needs
@@ -109,7 +110,7 @@ const char* renderUsage() {
     // The default's name comes from the constant, so that moving the default moves the help.
     static const std::string usage = [] {
         std::string text = kRenderUsage;
-        text.replace(text.find("%AA%"), 4, antiAliasingName(kDefaultSamples));
+        text.replace(text.find("%AA%"), 4, antiAliasingName(kDefaultAntiAliasing));
         return text;
     }();
     return usage.c_str();
@@ -253,7 +254,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         else if (flag == "--impostor-blend") options.cull.impostorBlend = parseOnOff(flag, next());
         else if (flag == "--far-crowd") options.cull.farCrowd = parseFarCrowd(flag, next());
         else if (flag == "--events") options.cull.events = parseOnOff(flag, next());
-        else if (flag == "--aa") options.samples = parseAntiAliasing(flag, next());
+        else if (flag == "--aa") options.antiAliasing = parseAntiAliasing(flag, next());
         else if (flag == "--raster") options.cull.raster = parseRaster(flag, next());
         else if (flag == "--mesh-raster-limit") {
             const std::string value = next();

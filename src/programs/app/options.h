@@ -63,7 +63,7 @@ struct RenderOptions {
     double startSeconds = 0.0;  // scene time of the first frame (where on the camera path a run begins)
     bool shadows = true;        // the directional light's shadow map
     unsigned threads = 0;       // --threads: CPU threads of the crowd's work (crowdgpu::setWorkerThreads); 0: one per core
-    VkSampleCountFlagBits samples = kDefaultSamples;  // --aa: the colour pass's samples per pixel
+    AntiAliasing antiAliasing = kDefaultAntiAliasing;  // --aa: samples per pixel and the edge filter
     crowdgpu::Method method = crowdgpu::Method::TwoPass;
     crowdgpu::Animation animation = crowdgpu::Animation::Gpu;  // where bone matrices are computed
     // With impostors on (cull.impostors): the most characters at a mesh level (LOD 0-2) in a frame.

@@ -2,15 +2,28 @@
 
 #include <cstring>
 
+#include "app/error.h"
 #include "app/host_device.h"
 
 namespace app {
 
-RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format)
+RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format,
+                           bool edgeFilter)
     : device_(device), samples_(format.samples) {
+    if (edgeFilter && format.color != VK_FORMAT_R8G8B8A8_SRGB && format.color != VK_FORMAT_R8G8B8A8_UNORM)
+        throw Error("the edge filter writes R8G8B8A8 pictures only (the target's colour format is " +
+                    std::to_string(format.color) + ")");
     try {
-        color_ = createImage(device, extent, format.color,
-                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "scene colour");
+        if (edgeFilter) {
+            // The filter writes the picture through a UNORM view (sRGB is no storage format).
+            color_ = createImage(device, extent, format.color, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                 "scene colour", VK_SAMPLE_COUNT_1_BIT, VK_FORMAT_R8G8B8A8_UNORM);
+            drawn_ = createImage(device, extent, format.color,
+                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "scene colour drawn");
+        } else {
+            color_ = createImage(device, extent, format.color,
+                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "scene colour");
+        }
         // The samples live only within the pass (resolved at its end): transient, never copied.
         if (samples_ != VK_SAMPLE_COUNT_1_BIT)
             multisampled_ = createImage(device, extent, format.color,
@@ -29,13 +42,18 @@ RenderTarget::~RenderTarget() { release(); }
 void RenderTarget::release() {
     destroyImage(device_, depth_);
     destroyImage(device_, multisampled_);
+    destroyImage(device_, drawn_);
     destroyImage(device_, color_);
 }
 
 void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4], ColourLoad load) {
-    // The previous frame's writes (and readback copy) must finish before this frame clears.
-    transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
+    // The previous frame's writes (and readback copy, or filter's reads) must finish before this frame
+    // draws.
+    const HostImage& picture = edgeFiltered() ? drawn_ : color_;
+    transitionImage(cmd, picture.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT |
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    0,
                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT,
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
@@ -53,14 +71,14 @@ void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]
                     VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
 
     VkRenderingAttachmentInfo colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    colorAttachment.imageView = multisampled ? multisampled_.view : color_.view;
+    colorAttachment.imageView = multisampled ? multisampled_.view : picture.view;
     colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     colorAttachment.loadOp = load == ColourLoad::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     if (multisampled) {
         // The average of a pixel's samples is its picture; the samples themselves are not kept.
         colorAttachment.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-        colorAttachment.resolveImageView = color_.view;
+        colorAttachment.resolveImageView = picture.view;
         colorAttachment.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     }
@@ -82,11 +100,30 @@ void RenderTarget::beginRendering(VkCommandBuffer cmd, const float clearColor[4]
 
 void RenderTarget::endRendering(VkCommandBuffer cmd) {
     vkCmdEndRendering(cmd);
+    if (edgeFiltered()) {
+        // The filter samples what was drawn and writes the picture (once the previous frame's copy of
+        // it is done).
+        transitionImage(cmd, drawn_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                        VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
+                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                        VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL);
+        return;
+    }
     // Any transfer next: the readback copies, the viewer blits to its swapchain. The resolve, too, is
     // a colour attachment write.
     transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                     VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+}
+
+void RenderTarget::endFiltering(VkCommandBuffer cmd) {
+    transitionImage(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                    VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 }
 
 Rgba8Image RenderTarget::readback() {
@@ -105,10 +142,12 @@ Rgba8Image RenderTarget::readback() {
     return image;
 }
 
-std::uint64_t renderTargetBytes(VkExtent2D extent, VkSampleCountFlagBits samples) {
-    // 4 bytes of colour and 4 of depth per sample, and the resolved colour beside the samples.
+std::uint64_t renderTargetBytes(VkExtent2D extent, VkSampleCountFlagBits samples, bool edgeFilter) {
+    // 4 bytes of colour and 4 of depth per sample, the resolved colour beside the samples, and the
+    // filter's picture beside what it filters.
     const std::uint64_t pixels = static_cast<std::uint64_t>(extent.width) * extent.height;
-    return pixels * (8 * static_cast<std::uint64_t>(samples) + (samples == VK_SAMPLE_COUNT_1_BIT ? 0 : 4));
+    return pixels * (8 * static_cast<std::uint64_t>(samples) + (samples == VK_SAMPLE_COUNT_1_BIT ? 0 : 4) +
+                     (edgeFilter ? 4 : 0));
 }
 
 }  // namespace app

@@ -10,16 +10,16 @@ namespace view {
 
 CrowdScene::CrowdScene(const app::HostDevice& context, const app::SceneOptions& scene, crowdgpu::Method method,
                        const app::CullOptions& cull, bool shadows, std::uint32_t meshCapacity,
-                       VkSampleCountFlagBits samples, VkExtent2D size)
+                       app::AntiAliasing antiAliasing, VkExtent2D size)
     : context_(context), scene_(scene), method_(method), cull_(cull), shadows_(shadows), meshCapacity_(meshCapacity),
-      samples_(samples) {
+      antiAliasing_(antiAliasing) {
     rebuild(scene, size);
 }
 
 app::RendererOptions CrowdScene::rendererOptions(crowdgpu::Method method, VkExtent2D size) const {
     app::RendererOptions options;
     static_cast<crowdgpu::RendererSettings&>(options) =
-        app::rendererSettings(cull_, method, animation_, shadows_, meshCapacity_, samples_);
+        app::rendererSettings(cull_, method, animation_, shadows_, meshCapacity_, antiAliasing_);
     options.size = size;
     return options;
 }

@@ -21,9 +21,9 @@ class CrowdScene {
 public:
     // Throws app::Error (one line) for a model, clip or crowd size that cannot be shown.
     // `meshCapacity`: --mesh-capacity, which applies (as in crowd-render) when impostors are on;
-    // `samples`: --aa's samples per pixel.
+    // `antiAliasing`: --aa.
     CrowdScene(const app::HostDevice& context, const app::SceneOptions& scene, crowdgpu::Method method,
-               const app::CullOptions& cull, bool shadows, std::uint32_t meshCapacity, VkSampleCountFlagBits samples,
+               const app::CullOptions& cull, bool shadows, std::uint32_t meshCapacity, app::AntiAliasing antiAliasing,
                VkExtent2D size);
 
     // Builds the crowd for new scene options. Checks everything that can be checked (model, clip,
@@ -61,7 +61,7 @@ private:
     app::CullOptions cull_;
     bool shadows_;
     std::uint32_t meshCapacity_;
-    VkSampleCountFlagBits samples_;
+    app::AntiAliasing antiAliasing_;
     crowdgpu::Animation animation_ = crowdgpu::Animation::Gpu;
     app::CrowdModels models_;
     std::unique_ptr<crowdgpu::Crowd> crowd_;

@@ -50,7 +50,7 @@ Viewer::Viewer(const ViewerOptions& options)
       swapchain_(context_, window_.createSurface(context_.instance), window_.framebufferSize(), options.vsync,
                  kFramesInFlight),
       scene_(context_, options.render.scene, options.render.method, options.render.cull, options.render.shadows,
-             options.render.meshCapacity, options.render.samples, swapchain_.extent()),
+             options.render.meshCapacity, options.render.antiAliasing, swapchain_.extent()),
       markers_(context_, scene_.renderer().library().settings().framesInFlight) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
     scene_.setAnimation(options.render.animation, swapchain_.extent());
@@ -61,7 +61,7 @@ Viewer::Viewer(const ViewerOptions& options)
     std::printf("crowd-view: %s (%s), %u x %s, %s, %ux%u, anti-aliasing %s, %s\n", context_.description.name.c_str(),
                 context_.description.driver.c_str(), scene_.crowd().size(), scene_.model().name().c_str(),
                 crowdgpu::methodName(scene_.method()), swapchain_.extent().width, swapchain_.extent().height,
-                app::antiAliasingName(options.render.samples), presentModeName(swapchain_.presentMode()));
+                app::antiAliasingName(options.render.antiAliasing).c_str(), presentModeName(swapchain_.presentMode()));
     for (const std::string& n : scene_.takeNotes()) note(n);
 }
 
