@@ -18,6 +18,8 @@
 #   here on lavapipe: DEVICE= FRAMES=3 WARMUP=1 PICTURE_FRAMES=1 SIZE=320x180 BENCH_SIZE=320x180 \
 #                     STRESS_COUNT=8000 STRESS_PICTURE_COUNT=8000 STRESS_SIZE=320x180 LEVELS="off msaa4" \
 #                     bash bench/run_aa.sh
+# EXTRA: flags added to the 1x pictures and the timed runs but not to the references, e.g.
+# EXTRA="--lod-thresholds 75,25" (finer levels of detail against the same references).
 # FRAMES (default 300) and WARMUP (30): crowd-bench's --frames and --warmup; PICTURE_FRAMES (30):
 # crowd-render's --frames (the picture is the last frame's); DEVICE (NVIDIA): part of the device's
 # name, empty for the first device; SIZE (1280x720): the pictures'; BENCH_SIZE (1920x1080): the
@@ -40,6 +42,9 @@ stress_picture_count=${STRESS_PICTURE_COUNT:-1000000}
 stress_size=${STRESS_SIZE:-1920x1080}
 inside_picture_count=${INSIDE_PICTURE_COUNT:-100000}
 read -r -a levels <<<"${LEVELS:-off msaa2 msaa4 msaa8}"
+# Flags for the 1x pictures and the timed runs, not the references (e.g. EXTRA="--lod-thresholds 75,25":
+# what finer levels of detail gain against the same references, and cost).
+read -r -a extra_flags <<<"${EXTRA:-}"
 parts=${PARTS:-pictures cost}
 bin=$PWD/.devbin
 res=/tmp/aa
@@ -84,7 +89,7 @@ for entry in "${pictures[@]}"; do
   done
   for aa in "${levels[@]}"; do
     # shellcheck disable=SC2086
-    run "$name-$aa" "$bin/crowd-render" "${device_flag[@]}" $flags --frames "$picture_frames" --aa "$aa" \
+    run "$name-$aa" "$bin/crowd-render" "${device_flag[@]}" $flags "${extra_flags[@]}" --frames "$picture_frames" --aa "$aa" \
       --size "$picture_size" --out "$res/$name-$aa.png" || continue
     for reference in supersampled same-lod; do
       "$bin/image-psnr" "$res/$name-$reference.png" "$res/$name-$aa.png" >"$res/$name-$aa-$reference.psnr" 2>&1
@@ -108,7 +113,7 @@ for round in 1 2; do
       for aa in "${levels[@]}"; do
         key=$scene-$method-$aa-$round
         # shellcheck disable=SC2046  # scene_flags gives words
-        run "bench-$key" "$bin/crowd-bench" "${device_flag[@]}" $(scene_flags $scene) --methods $method --aa "$aa" \
+        run "bench-$key" "$bin/crowd-bench" "${device_flag[@]}" $(scene_flags $scene) "${extra_flags[@]}" --methods $method --aa "$aa" \
           --frames "$frames" --warmup "$warmup" --size "$bench_size" --csv "$res/bench-$key.csv"
       done
     done
