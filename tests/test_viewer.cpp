@@ -265,20 +265,24 @@ void keepForInspection(const app::Rgba8Image& viewer, const app::Rgba8Image& ref
 TEST(ViewerProgram, ScriptedScreenshotMatchesCrowdRender) {
     SKIP_WITHOUT_XVFB();
     // The swapchain path (scene image -> blit into a B8G8R8A8_SRGB swapchain image -> copy out,
-    // BGRA to RGBA) must keep every byte of crowd-render's image.
-    const std::string scene = "--count 16 --frames 3 --size 160x120 --validation";
-    const std::string png = tempFile("scripted.png");
-    const test::ProgramResult r =
-        runUnderXvfb(kView, scene + deviceFlag() + " --no-ui --screenshot " + png);
-    expectCleanRun(r);
-    const app::Rgba8Image viewer = readPng(png);
-    const app::Rgba8Image reference = renderReference(scene, "scripted-reference.png");
-    ASSERT_EQ(viewer.width, 160u);
-    ASSERT_EQ(viewer.height, 120u);
-    const double matching = test::fractionOfMatchingPixels(viewer, reference, 2);
-    EXPECT_GE(matching, 0.995);
-    if (matching < 0.995) keepForInspection(viewer, reference, "viewer-scripted");
-    std::filesystem::remove(png);
+    // BGRA to RGBA) must keep every byte of crowd-render's image; with the edge filter (--aa fxaa) too,
+    // whose picture is another image, written in compute.
+    std::vector<app::Rgba8Image> references;
+    for (const std::string aa : {"off", "fxaa"}) {
+        const std::string scene = "--count 16 --frames 3 --size 160x120 --validation --aa " + aa;
+        const std::string png = tempFile("scripted-" + aa + ".png");
+        const test::ProgramResult r = runUnderXvfb(kView, scene + deviceFlag() + " --no-ui --screenshot " + png);
+        expectCleanRun(r);
+        const app::Rgba8Image viewer = readPng(png);
+        references.push_back(renderReference(scene, "scripted-reference-" + aa + ".png"));
+        ASSERT_EQ(viewer.width, 160u);
+        ASSERT_EQ(viewer.height, 120u);
+        const double matching = test::fractionOfMatchingPixels(viewer, references.back(), 2);
+        EXPECT_GE(matching, 0.995) << "--aa " << aa;
+        if (matching < 0.995) keepForInspection(viewer, references.back(), "viewer-scripted-" + aa);
+        std::filesystem::remove(png);
+    }
+    EXPECT_LT(test::fractionOfMatchingPixels(references[0], references[1], 2), 0.995) << "the filter changed nothing";
 }
 
 TEST(ViewerProgram, MeshCapacityGivesCrowdRendersPicture) {
