@@ -61,18 +61,13 @@ EdgeFilter::EdgeFilter(const gpu::VulkanContext& context, bool encodeSrgb, std::
 
 EdgeFilter::~EdgeFilter() { release(); }
 
+// Only from the destructor, or the constructor as it throws: nothing uses the handles after it.
 void EdgeFilter::release() {
-    if (pipeline_) vkDestroyPipeline(context_.device, pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(context_.device, layout_, nullptr);
-    if (pool_) vkDestroyDescriptorPool(context_.device, pool_, nullptr);
-    if (setLayout_) vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
-    if (sampler_) vkDestroySampler(context_.device, sampler_, nullptr);
-    pipeline_ = VK_NULL_HANDLE;
-    layout_ = VK_NULL_HANDLE;
-    pool_ = VK_NULL_HANDLE;
-    setLayout_ = VK_NULL_HANDLE;
-    sampler_ = VK_NULL_HANDLE;
-    sets_.clear();
+    vkDestroyPipeline(context_.device, pipeline_, nullptr);  // a null handle is ignored
+    vkDestroyPipelineLayout(context_.device, layout_, nullptr);
+    vkDestroyDescriptorPool(context_.device, pool_, nullptr);  // frees the sets
+    vkDestroyDescriptorSetLayout(context_.device, setLayout_, nullptr);
+    vkDestroySampler(context_.device, sampler_, nullptr);
 }
 
 void EdgeFilter::record(VkCommandBuffer cmd, std::uint32_t slot, VkImageView source, VkImageView destination,
