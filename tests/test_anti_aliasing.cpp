@@ -64,8 +64,9 @@ Closeness closenessToSupersampled(const std::string& scene, const std::string& n
     c.msaa4 = app::compareImages(reference, c.multisampled).psnr;
     c.fxaa = app::compareImages(reference, c.filtered).psnr;
     if (withBoth) c.both = app::compareImages(reference, render(scene, "256x144", "msaa4+fxaa")).psnr;
-    std::printf("%s: PSNR against the 4x4 supersampled render %.2f dB off, %.2f dB msaa4, %.2f dB fxaa, %.2f dB both\n",
-                name.c_str(), c.off, c.msaa4, c.fxaa, c.both);
+    std::printf("%s: PSNR against the 4x4 supersampled render %.2f dB off, %.2f dB msaa4, %.2f dB fxaa\n",
+                name.c_str(), c.off, c.msaa4, c.fxaa);
+    if (withBoth) std::printf("%s: %.2f dB msaa4+fxaa\n", name.c_str(), c.both);
     if (c.msaa4 < c.off + 3.0 || c.fxaa < c.off + 1.0) {
         app::writePng(test::artifactPath(name + "-supersampled.png"), reference);
         app::writePng(test::artifactPath(name + "-off.png"), off);

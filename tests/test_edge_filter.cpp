@@ -4,7 +4,6 @@
 // (64 samples a pixel, averaged in linear light). The filtered picture must come closer to it by a
 // stated margin, leave every pixel whose neighbourhood is flat exactly as it was, and keep alpha.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -13,6 +12,7 @@
 
 #include "app/host_image.h"
 #include "app/image_difference.h"
+#include "app/image_downsample.h"
 #include "gpu/buffer.h"
 #include "render/edge_filter.h"
 #include "support/gpu_test.h"
@@ -36,11 +36,6 @@ Linear sceneAt(double x, double y) {
     return {0.05f, 0.10f, 0.04f};
 }
 
-std::uint8_t encodeSrgb(double linear) {
-    const double c = linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-    return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
-}
-
 // The scene with `side` x `side` samples a pixel, averaged in linear light; 1: each pixel's centre.
 app::Rgba8Image drawScene(int side) {
     app::Rgba8Image image{kSize.width, kSize.height, std::vector<std::uint8_t>(kSize.width * kSize.height * 4)};
@@ -53,7 +48,7 @@ app::Rgba8Image drawScene(int side) {
                     sum[0] += c.r, sum[1] += c.g, sum[2] += c.b;
                 }
             std::uint8_t* p = &image.pixels[(y * kSize.width + x) * 4];
-            for (int c = 0; c < 3; ++c) p[c] = encodeSrgb(sum[c] / (side * side));
+            for (int c = 0; c < 3; ++c) p[c] = app::encodeSrgb(sum[c] / (side * side));
             p[3] = 255;
         }
     return image;

@@ -285,7 +285,7 @@ void Renderer::recordEdgeFilter(VkCommandBuffer cmd, std::uint32_t slot, VkImage
     if (extent.width == 0 || extent.height == 0)
         throw Error(ErrorCode::InvalidArgument, "recordEdgeFilter: the extent is empty");
     detail::translated([&] { data_->edgeFilter->record(cmd, slot, source, destination, extent); });
-    gpu::passDone(data_->passes, cmd, "edge filter");
+    gpu::passDone(data_->frame->passObserver(), cmd, "edge filter");
 }
 
 FrameOutput Renderer::output() const {
@@ -323,10 +323,7 @@ FrameCounts Renderer::counts(std::uint32_t slot) const {
     return result;
 }
 
-void Renderer::setPassObserver(PassObserver observer) {
-    data_->passes = observer;
-    data_->frame->setPassObserver(std::move(observer));
-}
+void Renderer::setPassObserver(PassObserver observer) { data_->frame->setPassObserver(std::move(observer)); }
 
 void Renderer::setMethod(Method method) {
     detail::translated([&] {

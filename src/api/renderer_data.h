@@ -4,7 +4,6 @@
 
 #include "crowdgpu/renderer.hpp"
 #include "frame/crowd_recorder.h"
-#include "gpu/pass_observer.h"
 #include "gpu/vulkan_context.h"
 #include "render/edge_filter.h"
 
@@ -15,7 +14,6 @@ struct RendererData {
     RendererSettings settings;
     std::unique_ptr<frame::CrowdRecorder> frame;
     std::unique_ptr<render::EdgeFilter> edgeFilter;  // with settings.edgeFilter
-    gpu::PassObserver passes;                        // the recorder's, for the edge filter's pass
 };
 
 // A renderer with every internal option (a shared impostor atlas, a smaller target limit): the

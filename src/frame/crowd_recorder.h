@@ -172,6 +172,7 @@ public:
     void recordGround(VkCommandBuffer cmd, std::uint32_t slot) const;
     void recordCharacters(VkCommandBuffer cmd, std::uint32_t slot);
     void setPassObserver(gpu::PassObserver observer) { passes_ = std::move(observer); }
+    const gpu::PassObserver& passObserver() const { return passes_; }
     FrameOutput output() const;
 
     // Between frames, with the GPU idle (the host's decision): the skinning method, culling and

@@ -15,12 +15,12 @@ double decode(std::uint8_t level) {
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-std::uint8_t encode(double linear) {
+}  // namespace
+
+std::uint8_t encodeSrgb(double linear) {
     const double c = linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
     return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
 }
-
-}  // namespace
 
 Rgba8Image boxDownsample(const Rgba8Image& image, std::uint32_t factor) {
     if (factor == 0 || image.width % factor != 0 || image.height % factor != 0)
@@ -42,7 +42,7 @@ Rgba8Image boxDownsample(const Rgba8Image& image, std::uint32_t factor) {
                     sum[3] += p[3];  // alpha is a coverage, not light: averaged as it is
                 }
             std::uint8_t* q = &out.pixels[(static_cast<std::size_t>(y) * out.width + x) * 4];
-            for (int c = 0; c < 3; ++c) q[c] = encode(sum[c] * share);
+            for (int c = 0; c < 3; ++c) q[c] = encodeSrgb(sum[c] * share);
             q[3] = static_cast<std::uint8_t>(std::lround(sum[3] * share));
         }
     return out;

@@ -9,6 +9,9 @@
 
 namespace app {
 
+// A linear value (0..1, clamped) as an sRGB-encoded 8-bit level, rounded.
+std::uint8_t encodeSrgb(double linear);
+
 // Throws app::Error when the picture's width or height is not a multiple of `factor` (or factor is 0).
 Rgba8Image boxDownsample(const Rgba8Image& image, std::uint32_t factor);
 
