@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools libglm-dev libglfw3-dev
   libtinygltf-dev nlohmann-json3-dev libstb-dev
-  libmeshoptimizer-dev libimgui-dev libgtest-dev
+  libmeshoptimizer-dev libimgui-dev libgtest-dev libsqlite3-dev
 )
 # Extra packages only the test suite needs (virtual X server for the viewer test and xdotool to resize
 # its window, broken glTF corpus, plotting for benchmark figures).
