@@ -1,15 +1,17 @@
 // Replaying a recording (src/programs/replay/, docs/trajectories.md): copies tiled side by side and
 // shifted in time, the feed against a hand-computed schedule and against a brute-force reference
-// through steps, jumps and seeks.
+// through steps, jumps and seeks, and path smoothing of a straight and a swaying walk.
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "replay/path_smoothing.h"
 #include "replay/replay_feed.h"
 #include "replay/trajectory_copies.h"
 
@@ -262,4 +264,57 @@ TEST(TrajectoryFeed, MatchesABruteForceReferenceThroughStepsJumpsAndSeeks) {
         reference.check(time, feed.advance(time));
         if (::testing::Test::HasFatalFailure()) return;
     }
+}
+
+// ---- Path smoothing ----
+
+namespace {
+
+void expectSample(const Sample& s, double time, double x, double z) {
+    EXPECT_DOUBLE_EQ(s.time, time);
+    EXPECT_DOUBLE_EQ(s.x, x);
+    EXPECT_DOUBLE_EQ(s.z, z);
+}
+
+// A walk along x at 1.2 m/s sampled at 25 fps, swaying sideways by `sway` metres at 0.85 Hz.
+Recording swayingWalk(double sway) {
+    Track t{5, {}};
+    for (int i = 0; i <= 500; ++i) {
+        const double time = i / 25.0;
+        t.samples.push_back({time, 1.2 * time, sway * std::sin(2.0 * std::numbers::pi * 0.85 * time)});
+    }
+    return recordingOf({t});
+}
+
+}  // namespace
+
+TEST(TrajectorySmoothing, AStraightWalkIsUnchangedAndEndpointsStay) {
+    Recording r = swayingWalk(0.0);
+    const Recording raw = r;
+    const SmoothingReport report = smoothPaths(r, kDefaultSmoothingWindow);
+    EXPECT_LT(report.maxDeviation, 1e-12);
+    for (std::size_t i = 0; i < raw.tracks[0].samples.size(); ++i) EXPECT_EQ(r.tracks[0].samples[i].time, raw.tracks[0].samples[i].time);
+    Recording swaying = swayingWalk(0.025);
+    const Sample first = swaying.tracks[0].samples.front(), last = swaying.tracks[0].samples.back();
+    smoothPaths(swaying, kDefaultSmoothingWindow);
+    expectSample(swaying.tracks[0].samples.front(), first.time, first.x, first.z);
+    expectSample(swaying.tracks[0].samples.back(), last.time, last.x, last.z);
+}
+
+TEST(TrajectorySmoothing, TakesSwayOutWithinItsReport) {
+    Recording r = swayingWalk(0.025);
+    const SmoothingReport report = smoothPaths(r, kDefaultSmoothingWindow);
+    // A Gaussian of sigma 0.6 / sqrt(12) s keeps exp(-2 pi^2 sigma^2 f^2) = 0.65 of a 0.85 Hz sway.
+    double amplitude = 0.0;
+    for (const Sample& s : r.tracks[0].samples)
+        if (s.time > 2.0 && s.time < 18.0) amplitude = std::max(amplitude, std::fabs(s.z));
+    EXPECT_NEAR(amplitude, 0.025 * 0.652, 0.001);
+    EXPECT_NEAR(report.maxDeviation, 0.025 * (1.0 - 0.652), 0.001);
+    EXPECT_GT(report.meanDeviation, 0.0);
+    EXPECT_LT(report.meanDeviation, report.maxDeviation);
+    EXPECT_EQ(report.samples, 501u);
+    EXPECT_EQ(report.maxId, 5);
+    Recording off = swayingWalk(0.025);
+    EXPECT_EQ(smoothPaths(off, 0.0).maxDeviation, 0.0);
+    EXPECT_EQ(off.tracks[0].samples[10].z, swayingWalk(0.025).tracks[0].samples[10].z);
 }
