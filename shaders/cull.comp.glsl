@@ -40,6 +40,13 @@ uint cascadesReached(vec4 sphere) {
 
 void cullCharacter(uint c) {
     CharacterRecord character = characters[c];
+    // A free slot (its scale 0, crowd/population.h): nothing to draw or cast; a character that takes
+    // the slot chooses its level afresh.
+    if (!(character.tint.w > 0.0)) {
+        lodState[c] = 0u;
+        shadowStates[c] = 0u;
+        return;
+    }
     vec4 sphere = worldSphere(character, models[character.ids.x]);
     bool inView = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
     float size = projectedDiameter(sphere, cull.camera);

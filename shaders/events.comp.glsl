@@ -28,6 +28,7 @@ layout(std430, set = 0, binding = 10) buffer Events {
     EventHeader header;
     EventRecord fired[];
 };
+layout(std430, set = 0, binding = 11) readonly buffer Terrain { float heights[]; };
 
 #include "motion.glsl.inc"
 
@@ -69,16 +70,19 @@ int partnerIn(uvec2 range, float key) {
     return -1;
 }
 
+#include "terrain_sample.glsl.inc"
+
 // Where the event happens: the character's placement at that moment applied to the joint's position
 // in its clip's pose (precomputed per event; the firing clip's pose alone, its weight at least 1/2).
 vec3 worldPlace(uint c, MotionRecord m, uint firstClip, float elapsed, vec3 modelPlace) {
     vec3 position = m.origin.xyz;
-    if (m.phase.w != 0.0) {
+    if (m.phase.w == MOTION_ROOT) {
         // Before a restated record's start (steady: one clip, no turn) the straight line runs back.
         uint to = firstClip + m.clips.y;
         position.xz += elapsed >= 0.0 ? travelled(m, elapsed, firstClip + m.clips.x, to)
                                       : turnToWorld(rootStep(to, m.phase.x, m.phase.x + m.phase.z * elapsed), m.origin.w);
     }
+    position.y += terrainHeightAt(push.terrain, position.xz);  // on the ground, as the motion pass places it
     float heading = motionHeading(m, elapsed), scale = characters[c].tint.w;
     vec2 turned = turnToWorld(modelPlace.xz * scale, heading);
     return position + vec3(turned.x, modelPlace.y * scale, turned.y);
@@ -99,6 +103,9 @@ void append(uint c, uint clip, uint event, vec3 place, float age) {
 // The events character c fires following `m` at times t (since the epoch) with from < t <= to and
 // begin <= t < end (begin: the segment's true start, at or before the record's).
 void fireSegment(uint c, MotionRecord m, float begin, float end) {
+    // A driven character's gait and phase come from its keys in the motion pass, not from a record:
+    // its events are the CPU's (Crowd::events), this buffer holds the behaviours' (docs/host-driven.md).
+    if (m.phase.w >= MOTION_DRIVEN_HOST) return;
     float from = push.window.x, to = push.window.y;
     float lo = max(from, begin), hi = min(to, end);
     if (!(hi >= lo)) return;

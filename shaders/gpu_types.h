@@ -58,6 +58,21 @@ using uint = std::uint32_t;
 #define MAX_MODEL_MATERIALS 16
 #define MAX_MATERIALS 128
 
+// ---- Terrain (crowd/terrain.h, shaders/terrain_height.h) ----
+// The host's heightfield: heights on a grid over a rectangle of the ground, in a buffer of floats
+// (row-major: sample (column, row) at column + row x columns), bilinear between them, the edge's heights
+// beyond. Characters stand on it; the library's ground is drawn as it.
+struct TerrainGrid {
+    vec4 extent;  // x, y: world (x, z) of sample (0, 0); z, w: the grid's width and depth in metres (z = 0: no
+                  // terrain, the ground is the plane y = 0)
+    uvec4 size;   // x: samples along x (columns, >= 2), y: along z (rows, >= 2), zw: unused
+};
+
+// The library's ground over a terrain (shaders/ground.vert.glsl): the heightfield's grid, every
+// stride-th line so that at most GROUND_MOST_CELLS cells lie along a side, and a ring of cells reaching out
+// to the ground's edge.
+#define GROUND_MOST_CELLS 512u
+
 // One bind-pose vertex as pass 1 (and the vertex-shader baseline) reads it.
 // normal.w holds the vertex's material index (a small integer stored exactly as a float).
 struct SkinVertex {
@@ -107,7 +122,8 @@ struct CharacterRecord {
     vec4 pose;       // x: normalized phase in cycles (both clips of a crossfade are at the same point of
                      // their cycles, fract(x)), y: weight of the clip faded to (0..1), z: the props it
                      // carries (bit k: its model's prop k; an integer below 2^MAX_PROPS, exact as a
-                     // float; fixed while the crowd is), w: unused
+                     // float; fixed while the character is), w: the float bits of its slot's generation
+                     // (crowd/population.h: which character holds the slot)
 };
 
 // One (model, LOD) bucket, fixed while the crowd is: where its visible characters are listed and
@@ -365,6 +381,18 @@ struct AnimationTrack {
     uint firstValue;     // into the key values
 };
 
+// How a segment moves its character (MotionRecord::phase.w): in place, carried by its clips' root
+// motion, or driven by the host's samples (docs/host-driven.md): from keys the CPU made of samples in the
+// host's memory, or the GPU of samples in a buffer of the host's (the segment then holds the character
+// where it was spawned until its first key).
+#define MOTION_IN_PLACE 0.0
+#define MOTION_ROOT 1.0
+#define MOTION_DRIVEN_HOST 2.0
+#define MOTION_DRIVEN_DEVICE 3.0
+
+// Seconds between the epochs of the GPU's clock (crowd/epoch.h).
+#define EPOCH_SECONDS 64.0f
+
 // What a character does from a start time on: one segment of its motion, planned by the CPU
 // (crowd/motion.h), evaluated in closed form by the CPU and the GPU at any later time. Times are
 // seconds since the crowd's epoch (crowd/epoch.h), never scene time: scene time is a double, and a
@@ -375,10 +403,47 @@ struct MotionRecord {
     vec4 timing;  // x: start time (s since the epoch), y: crossfade duration (s; 0 = none), z: turn rate (rad/s),
                   // w: how long the turn lasts (s)
     vec4 phase;   // x: normalized phase at the start (cycles), y: cycles per second of the clip faded
-                  // from, z: of the clip faded to, w: 1 = root motion carries the character, 0 = in place
+                  // from, z: of the clip faded to, w: how it moves (MOTION_*: in place, root motion, driven)
     uvec4 clips;  // x: clip faded from, y: clip faded to (the model's own clip indices), zw: the float
                   // bits of the world (x, z) displacement where the turn and the crossfade end (the
                   // curved part, integrated once when the segment is planned: crowd::sealSegment)
+};
+
+// ---- Characters the host drives (crowd/driven.h, shaders/driven_keys.h, docs/host-driven.md) ----
+// One key of a driven character: where a sample put it and what it plays there. Each driven slot keeps
+// its last DRIVEN keys in a ring (CrowdCapacity::drivenKeys of them): key k of slot c at
+// k x slots + c, so a warp's characters read one key each from neighbouring addresses.
+struct DrivenKey {
+    vec4 place;   // x: time (s since its epoch, motion.w), y, z: world x, z (metres), w: body heading (radians)
+    vec4 motion;  // x: phase at the key (cycles, 0..1), y: cycles since the key before, z: gait (0 stand, 1 walk,
+                  // 2 run; between: their crossfade), w: the epoch its time counts from (crowd/epoch.h: its
+                  // index, exact as a float up to 2^24 epochs, 1e9 s)
+};
+
+// A model's gaits for driven characters (crowdgpu::GaitSettings), one per model.
+struct DrivenModel {
+    uvec4 clips;   // x: standing, y: walking, z: running clip (the model's indices; a gait it lacks: its
+                   // neighbour's), w: unused
+    vec4 cycles;   // x: the standing clip's cycles per second, y: the walk's stride (metres per cycle; 0: it
+                   // travels not), z: the run's, w: the walk's own cycles per second (for a walk that does not travel)
+    vec4 bands;    // x: walk from (m/s; below: stand), y: run from (m/s), z: hysteresis (a fraction of the
+                   // band's edge), w: seconds a whole gait change takes
+    vec4 turning;  // x: the fastest the body turns (rad/s), y: the slowest speed whose direction it turns to
+                   // (m/s), zw: unused
+};
+
+// A key the CPU made, on its way to its slot's ring (render/driven_pass.h).
+struct DrivenKeyUpload {
+    DrivenKey key;
+    uvec4 target;  // x: slot, y: the key's index (counted from the slot's first), zw: unused
+};
+
+// The host's samples in a device buffer (crowdgpu::DeviceSample): one per slot, written by the host's
+// own pass each frame.
+struct DeviceSample {
+    float time;     // seconds relative to the frame's time (0: now; not a number: no sample this frame)
+    float x, z;     // world metres
+    float heading;  // radians about +y, or not a number: towards the motion
 };
 
 // Push constants of the palette passes. palette.comp: x: bucket, y: joints of its model, z:
@@ -388,10 +453,14 @@ struct PalettePush {
     uvec4 bucket;
 };
 
-// Push constants of the motion pass.
+// Push constants of the motion pass (and the scatters and the driven ingest, which use what they say).
 struct MotionPush {
-    uvec4 counts;  // x: characters, y: most workgroups in a dispatch's x dimension, z, w: unused
-    vec4 time;     // x: the frame's time in seconds since the crowd's epoch (crowd/epoch.h), yzw: unused
+    uvec4 counts;  // x: characters (slots), y: most workgroups in a dispatch's x dimension, z: keys a slot keeps
+                   // for driven characters, w: unused
+    vec4 time;     // x: the frame's time in seconds since the crowd's epoch (crowd/epoch.h), y: the driven
+                   // characters' clock (x less the delay: crowd::Crowd::drivenClock), z: their extrapolation
+                   // (s), w: the epoch's index
+    TerrainGrid terrain;  // the ground characters stand on (motion pass)
 };
 
 // Per-frame parameters of the cull pass, in a storage buffer (the frustum alone is 96 bytes). Not a
@@ -461,6 +530,7 @@ struct SceneUniforms {
     vec4 shadowSplits;         // where cascades 0, 1, 2 (x, y, z) end along the view; w: past all
     vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: the ground
                                // sunlight image's first level made this frame (render/ground_sunlight.h)
+    TerrainGrid terrain;       // the ground's heightfield (its heights in the scene set's binding 6)
 };
 
 // ---- Animation events on the GPU (render/event_pass.h, shaders/events.comp.glsl, docs/events.md) ----
@@ -505,6 +575,7 @@ struct EventPush {
                    // z: 1 = the previous segments' table, 0 = every character's current segment, w: unused
     vec4 window;   // x: the previous frame's time, y: this frame's (s since the epoch; events at from < t <= to),
                    // z: the most cycles of a clip one event is looked for over (a longer window keeps its end)
+    TerrainGrid terrain;  // the ground the events' places stand on
 };
 #define EVENT_MAX_CYCLES 64.0
 

@@ -7,6 +7,7 @@
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
 layout(push_constant) uniform Push { vec4 cameraPosition; vec4 area; };
 layout(location = 0) in vec3 inWorld;
+layout(location = 1) in vec3 inNormal;
 layout(location = 0) out vec4 outColor;
 // Off only in tests, which measure what the filter gains against the tiles point-sampled.
 layout(constant_id = 0) const bool kFilteredTiles = true;
@@ -34,8 +35,9 @@ float oddTileShare(vec2 p) {
 // cascades meet, so the hardware's derivatives of it would pick a coarse level along the seam), and
 // the fetch stays inside that cascade's square, whose coarse texels would otherwise mix in its neighbour's.
 float groundSunlightAt(vec3 world) {
-    if (!kSunlightImage) return sunlight(scene, world);
     vec3 dx = dFdx(world), dy = dFdy(world);  // before any branch: derivatives need the whole quad
+    // The image holds the plane y = 0's sunlight: over a terrain, the map's comparisons at the pixel.
+    if (!kSunlightImage || scene.terrain.extent.z > 0.0) return sunlight(scene, world);
     if (scene.shadow.x == 0.0) return 1.0;
     if (scene.shadowCascadeUse.x == 1.0) {  // one map over the view, as before cascades (its cost too)
         vec2 uv = (scene.shadowLight * vec4(world, 1.0)).xy * 0.5 + 0.5;
@@ -58,6 +60,6 @@ float groundSunlightAt(vec3 world) {
 void main() {
     float checker = mix(1.0, 0.86, oddTileShare(inWorld.xz / scene.groundColor.w));
     vec3 albedo = scene.groundColor.rgb * checker;
-    vec3 color = shadeWithSunlight(scene, vec3(0.0, 1.0, 0.0), albedo, inWorld, groundSunlightAt(inWorld), cameraPosition.xyz);
+    vec3 color = shadeWithSunlight(scene, normalize(inNormal), albedo, inWorld, groundSunlightAt(inWorld), cameraPosition.xyz);
     outColor = vec4(color, 1.0);
 }

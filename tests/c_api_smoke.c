@@ -336,7 +336,7 @@ int main(void) {
     EXPECT(crowdgpu_renderer_create(NULL, crowd, &settings, &renderer) == CROWDGPU_ERROR_INVALID_ARGUMENT,
            "create with a NULL device");
     EXPECT(strlen(crowdgpu_last_error()) > 0, "no message for a NULL device");
-    EXPECT(crowdgpu_renderer_record_compute(NULL, commands[0], 0, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT,
+    EXPECT(crowdgpu_renderer_record_compute(NULL, commands[0], 0, NULL, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT,
            "record_compute with NULLs");
     EXPECT(crowdgpu_model_soldier(1, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT, "soldier with NULL out");
 
@@ -411,7 +411,7 @@ int main(void) {
 
         VkCommandBuffer cmd = commands[slot];
         VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-        EXPECT(crowdgpu_renderer_record_compute(renderer, cmd, slot, &view) == CROWDGPU_OK, "compute: %s",
+        EXPECT(crowdgpu_renderer_record_compute(renderer, cmd, slot, &view, crowd) == CROWDGPU_OK, "compute: %s",
                crowdgpu_last_error());
         EXPECT(crowdgpu_renderer_record_shadows(renderer, cmd, slot) == CROWDGPU_OK, "shadows: %s",
                crowdgpu_last_error());

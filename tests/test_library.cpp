@@ -22,6 +22,7 @@
 #include "app/render_target.h"
 #include "render/scene_pass.h"
 #include "support/gpu_test.h"
+#include "support/host_frames.h"
 #include "support/run_program.h"
 
 // README.md's Embedding block, wrapped by tests/readme_embedding.cpp.in.
@@ -36,23 +37,8 @@ namespace {
 
 using test::GpuTest;
 
-// The host's device as the library sees it: the test context's handles and the features it enabled.
-struct HostDevice {
-    VkPhysicalDeviceVulkan11Features vulkan11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
-    VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    VkPhysicalDeviceVulkan13Features vulkan13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    crowdgpu::Device device;
-
-    explicit HostDevice(const gpu::VulkanContext& context) {
-        vulkan12.pNext = &vulkan11;
-        vulkan13.pNext = &vulkan12;
-        features.pNext = &vulkan13;
-        crowdgpu::enableRequiredFeatures(features, vulkan11, vulkan12, vulkan13);
-        features.features.fragmentStoresAndAtomics = context.fragmentStores;  // two-pass-direct's, when there
-        device = {context.instance, context.physicalDevice, context.device, context.queueFamily, &features};
-    }
-};
+// The host's device as the library sees it (tests/support/host_frames.h).
+using HostDevice = test::LentDevice;
 
 // The default scene's crowd of `count` soldiers, as crowd-render builds it.
 crowdgpu::Crowd defaultCrowd(std::uint32_t count) {
@@ -75,9 +61,9 @@ crowdgpu::FrameView defaultView(const crowdgpu::Crowd& crowd, VkExtent2D size, d
 
 // One frame the way a host draws it: the crowd planned, compute and shadows recorded, then the
 // host's own colour pass with the ground and the characters.
-void recordFrame(crowdgpu::Renderer& renderer, VkCommandBuffer cmd, std::uint32_t slot,
+void recordFrame(crowdgpu::Renderer& renderer, const crowdgpu::Crowd& crowd, VkCommandBuffer cmd, std::uint32_t slot,
                  const crowdgpu::FrameView& view, app::RenderTarget& target) {
-    renderer.recordCompute(cmd, slot, view);
+    renderer.recordCompute(cmd, slot, view, crowd);
     renderer.recordShadows(cmd, slot);
     const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
     target.beginRendering(cmd, sky);
@@ -168,7 +154,7 @@ TEST_F(GpuTest, EmbeddedCrowdEqualsCrowdRenderForTwoPassVsAndCompute) {
         app::RenderTarget target(*device, size, settings.target);
         crowd.advanceTo(0.0f);
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
-            recordFrame(renderer, cmd, 0, defaultView(crowd, size, 0.0f), target);
+            recordFrame(renderer, crowd, cmd, 0, defaultView(crowd, size, 0.0f), target);
         });
         const app::Rgba8Image embedded = bgraToRgba(target.readback());
         EXPECT_GE(test::fractionOfMatchingPixels(embedded, program, 1), 0.999)
@@ -215,7 +201,7 @@ TEST_F(GpuTest, GroundBehindTheCharactersDrawsRecordGroundsPicture) {
         auto frame = [&](Ground ground) {
             renderer.setGround(ground == Ground::Behind);
             gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
-                renderer.recordCompute(cmd, 0, view);
+                renderer.recordCompute(cmd, 0, view, crowd);
                 renderer.recordShadows(cmd, 0);
                 const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
                 target.beginRendering(cmd, sky);
@@ -243,7 +229,7 @@ TEST_F(GpuTest, GroundBehindTheCharactersDrawsRecordGroundsPicture) {
         EXPECT_LT(test::fractionOfMatchingPixels(none, before, 0), 0.92) << label << ": the ground is drawn";
         renderer.setGround(true);
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
-            renderer.recordCompute(cmd, 0, view);
+            renderer.recordCompute(cmd, 0, view, crowd);
             try {
                 renderer.recordGround(cmd, 0);
                 ADD_FAILURE() << "recordGround with the ground setting on: no error";
@@ -297,8 +283,8 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
         const crowdgpu::FrameView view = crowdgpu::lookAt(eye, at, 0.8f, 0.1f, 200.0f, size, time);
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         vkBeginCommandBuffer(cmds[slot], &begin);
-        a.recordCompute(cmds[slot], slot, view);
-        b.recordCompute(cmds[slot], slot, view);
+        a.recordCompute(cmds[slot], slot, view, soldiers);
+        b.recordCompute(cmds[slot], slot, view, herd);
         a.recordShadows(cmds[slot], slot);
         b.recordShadows(cmds[slot], slot);
         const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
@@ -322,8 +308,8 @@ TEST_F(GpuTest, TwoRenderersShareOneHostFrameWithTwoFramesInFlight) {
     auto alone = [&](crowdgpu::Renderer* first, crowdgpu::Renderer* second) {
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
             const crowdgpu::FrameView view = crowdgpu::lookAt(eye, at, 0.8f, 0.1f, 200.0f, size, lastTime);
-            a.recordCompute(cmd, 0, view);
-            b.recordCompute(cmd, 0, view);
+            a.recordCompute(cmd, 0, view, soldiers);
+            b.recordCompute(cmd, 0, view, herd);
             a.recordShadows(cmd, 0);
             b.recordShadows(cmd, 0);
             const float sky[4] = {crowdgpu::kHorizonColor[0], crowdgpu::kHorizonColor[1], crowdgpu::kHorizonColor[2], 1.0f};
@@ -414,24 +400,24 @@ TEST_F(GpuTest, LibraryRefusesBadUseWithOneClearError) {
         crowdgpu::Renderer renderer(host.device, crowd, {});
         const crowdgpu::FrameView view = defaultView(crowd, {64, 64}, 0.0f);
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
-            expectError(crowdgpu::ErrorCode::WrongOrder, "recordSetup", [&] { renderer.recordCompute(cmd, 0, view); });
+            expectError(crowdgpu::ErrorCode::WrongOrder, "recordSetup", [&] { renderer.recordCompute(cmd, 0, view, crowd); });
         });
         runSetup(*context, renderer);
         gpu::runOneShotNow(*context, [&](VkCommandBuffer cmd) {
             expectError(crowdgpu::ErrorCode::WrongOrder, "recordCompute", [&] { renderer.recordCharacters(cmd, 0); });
             expectError(crowdgpu::ErrorCode::WrongOrder, "recordCompute", [&] { renderer.recordShadows(cmd, 1); });
-            expectError(crowdgpu::ErrorCode::InvalidArgument, "slot 2", [&] { renderer.recordCompute(cmd, 2, view); });
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "slot 2", [&] { renderer.recordCompute(cmd, 2, view, crowd); });
             crowdgpu::FrameView broken = view;
             broken.projection[0] = std::nanf("");
-            expectError(crowdgpu::ErrorCode::InvalidArgument, "perspective", [&] { renderer.recordCompute(cmd, 0, broken); });
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "perspective", [&] { renderer.recordCompute(cmd, 0, broken, crowd); });
             crowdgpu::FrameView empty = view;
             empty.viewport.extent.height = 0;
-            expectError(crowdgpu::ErrorCode::InvalidArgument, "viewport is empty", [&] { renderer.recordCompute(cmd, 0, empty); });
+            expectError(crowdgpu::ErrorCode::InvalidArgument, "viewport is empty", [&] { renderer.recordCompute(cmd, 0, empty, crowd); });
             crowdgpu::FrameView wide = view;
             wide.viewport.extent.width = context->properties.limits.maxViewportDimensions[0] + 1;
             expectError(crowdgpu::ErrorCode::InvalidArgument, "maxViewportDimensions",
-                        [&] { renderer.recordCompute(cmd, 0, wide); });
-            renderer.recordCompute(cmd, 0, view);
+                        [&] { renderer.recordCompute(cmd, 0, wide, crowd); });
+            renderer.recordCompute(cmd, 0, view, crowd);
             expectError(crowdgpu::ErrorCode::WrongOrder, "recordShadows", [&] { renderer.recordCharacters(cmd, 0); });
             // The edge filter, asked of a renderer made without it.
             expectError(crowdgpu::ErrorCode::WrongOrder, "edgeFilter",

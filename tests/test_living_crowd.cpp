@@ -312,8 +312,8 @@ TEST(CrowdApi, TheReadmeExampleRunsAsWritten) {
     crowd::BehaviourSettings mill;
     mill.kind = crowd::Behaviour::Mill;
     mill.seed = 7;
-    crowd::Crowd crowd(models, crowd::gridLayout(models, layout), mill);
-    const std::uint32_t hero = crowd.spawn({.clip = 0, .position = {0, 0, 0}, .model = 0});
+    crowd::Crowd crowd(models, crowd::gridLayout(models, layout), mill, crowd::Capacity{{1001}});  // a spare soldier
+    const std::uint32_t hero = crowd.spawn({.clip = 0, .position = {0, 0, 0}, .model = 0}).slot;
     crowd.moveTo(hero, {12.0f, -4.0f}, 2.0f);
     std::string standing;
     for (std::uint32_t frame = 0; frame < 32 * 60; ++frame) {

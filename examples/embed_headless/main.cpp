@@ -747,7 +747,7 @@ int main(int argc, char** argv) {
             CHECK(vkBeginCommandBuffer(cmd, &begin));
             timer.begin(cmd, slot);
             // 1. The crowd's compute work and shadows, outside any pass.
-            renderer.recordCompute(cmd, slot, view);
+            renderer.recordCompute(cmd, slot, view, crowd);
             renderer.recordShadows(cmd, slot);
             // 2. The colour pass: the host's ground and boxes (or the library's ground), then the crowd.
             recordColourPass(cmd, target, renderer, slot, hostDrawing, viewProjection);

@@ -30,7 +30,8 @@ typedef enum crowdgpu_result {
     CROWDGPU_ERROR_OUT_OF_HOST_MEMORY = 4,
     CROWDGPU_ERROR_WRONG_ORDER = 5,
     CROWDGPU_ERROR_LOAD_FAILED = 6,
-    CROWDGPU_ERROR_VULKAN = 7
+    CROWDGPU_ERROR_VULKAN = 7,
+    CROWDGPU_ERROR_CAPACITY_EXCEEDED = 8
 } crowdgpu_result;
 
 /* The message of this thread's last failure ("" if none). */
@@ -83,25 +84,95 @@ void crowdgpu_model_destroy(crowdgpu_model model);
 /* ---- Crowds (Vulkan-free) ---- */
 typedef enum crowdgpu_behaviour { CROWDGPU_IN_PLACE = 0, CROWDGPU_MARCH = 1, CROWDGPU_MILL = 2 } crowdgpu_behaviour;
 
+/* Who moves a character (crowdgpu::MotionSource): the crowd's behaviour, the host's samples from its
+ * memory (crowdgpu_crowd_drive), or from a device buffer (crowdgpu_renderer_record_compute_samples). */
+typedef enum crowdgpu_motion {
+    CROWDGPU_MOTION_BEHAVIOUR = 0,
+    CROWDGPU_MOTION_HOST_SAMPLES = 1,
+    CROWDGPU_MOTION_DEVICE_SAMPLES = 2
+} crowdgpu_motion;
+
 typedef struct crowdgpu_character {
     uint32_t model, clip;
     float phase, speed;
     float position[3];
     float heading, scale;
     float tint[3];
+    crowdgpu_motion motion;
 } crowdgpu_character;
+
+/* The most characters of each model at once (per_model, model_count entries; NULL: the initial ones), and
+ * the keys a slot keeps for driven characters (crowdgpu::CrowdCapacity; 8 covers 50 Hz samples at a
+ * 0.1 s delay; 0: 8 when any initial character is driven, else none). */
+typedef struct crowdgpu_capacity {
+    const uint32_t* per_model;
+    uint32_t driven_keys;
+} crowdgpu_capacity;
 
 /* A grid of `count` characters of the models (equal shares), each playing its model's "walk" (or
  * first) clip with seeded jitter. The crowd keeps its models alive: the caller may destroy its own
  * handles afterwards. */
 crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_t model_count, uint32_t count,
                                            uint32_t seed, crowdgpu_behaviour behaviour, crowdgpu_crowd* out);
-crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* character, uint32_t* index);
+/* A character of a crowd whose population changes (crowdgpu::CharacterHandle): its slot, the index the
+ * per-character calls take, and the slot's generation; stale once the character is removed. */
+typedef struct crowdgpu_handle {
+    uint32_t slot, generation;
+} crowdgpu_handle;
+/* A crowd of `count` characters (slots 0 .. count-1) of the models, and room for more (`capacity`, NULL:
+ * none beyond them, 8 driven keys a slot); each model's spare slots follow the characters. characters may
+ * be NULL when count is 0. */
+crowdgpu_result crowdgpu_crowd_create(const crowdgpu_model* models, uint32_t model_count,
+                                      const crowdgpu_character* characters, uint32_t count,
+                                      const crowdgpu_capacity* capacity, uint32_t seed, crowdgpu_behaviour behaviour,
+                                      crowdgpu_crowd* out);
+/* Adds a character in a free slot of its model (crowdgpu::Crowd::spawn); *handle (may be NULL) names it.
+ * CROWDGPU_ERROR_CAPACITY_EXCEEDED when every slot of its model is taken; nothing changes then. */
+crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* character, crowdgpu_handle* handle);
+/* The character leaves; its slot is free. A stale handle is CROWDGPU_ERROR_INVALID_ARGUMENT. */
+crowdgpu_result crowdgpu_crowd_remove(crowdgpu_crowd crowd, crowdgpu_handle handle);
+/* Batches (crowdgpu::Crowd::spawn and remove over arrays): all or none, as the C++ calls. handles[i]
+ * names characters[i]. */
+crowdgpu_result crowdgpu_crowd_spawn_batch(crowdgpu_crowd crowd, const crowdgpu_character* characters, size_t count,
+                                           crowdgpu_handle* handles);
+crowdgpu_result crowdgpu_crowd_remove_batch(crowdgpu_crowd crowd, const crowdgpu_handle* handles, size_t count);
+/* Whether the handle names a living character (false for a NULL crowd). */
+bool crowdgpu_crowd_alive(crowdgpu_crowd crowd, crowdgpu_handle handle);
+/* The handle of slot `slot`'s living character; a free slot is CROWDGPU_ERROR_INVALID_ARGUMENT. */
+crowdgpu_result crowdgpu_crowd_handle(crowdgpu_crowd crowd, uint32_t slot, crowdgpu_handle* handle);
+/* The living characters (crowdgpu_crowd_size counts the slots). */
+uint32_t crowdgpu_crowd_live_count(crowdgpu_crowd crowd);
+/* The host's samples for `count` characters (crowdgpu::Crowd::drive): characters[i] at (x[i], z[i])
+ * metres at times[i] scene seconds, facing headings[i] radians (headings may be NULL; NaN: towards the
+ * motion). The whole batch is refused, nothing applied, naming the first bad sample; a sample no later than
+ * its character's newest is ignored and counted in *late. applied and late may be NULL. */
+crowdgpu_result crowdgpu_crowd_drive(crowdgpu_crowd crowd, const crowdgpu_handle* characters, const double* times,
+                                     const float* x, const float* z, const float* headings, uint32_t count,
+                                     uint32_t* applied, uint32_t* late);
+/* How driven characters are drawn (crowdgpu::DrivenTiming): `delay` seconds behind their samples, going on
+ * for at most `extrapolate` seconds past the newest (0 to 3,600 s each). */
+crowdgpu_result crowdgpu_crowd_set_driven_timing(crowdgpu_crowd crowd, double delay, double extrapolate);
+/* A model's gait bands for driven characters (crowdgpu::GaitSettings). */
+typedef struct crowdgpu_gait_settings {
+    float walk_from, run_from, hysteresis, fade, turn_rate, turn_speed;
+} crowdgpu_gait_settings;
+crowdgpu_result crowdgpu_crowd_gait_settings(crowdgpu_crowd crowd, uint32_t model, crowdgpu_gait_settings* out);
+crowdgpu_result crowdgpu_crowd_set_gait_settings(crowdgpu_crowd crowd, uint32_t model,
+                                                 const crowdgpu_gait_settings* settings);
+/* The ground every character stands on (crowdgpu::Crowd::setTerrain): columns x rows heights (metres,
+ * row-major, x fastest) over the rectangle from origin (x, z) of size (width, depth); 0 x 0: flat again. */
+crowdgpu_result crowdgpu_crowd_set_terrain(crowdgpu_crowd crowd, uint32_t columns, uint32_t rows, const float* heights,
+                                           const float origin[2], const float size[2]);
+/* The ground's height at (x, z). */
+float crowdgpu_crowd_ground_height(crowdgpu_crowd crowd, float x, float z);
+/* The ground the crowd may cover (crowdgpu::Crowd::setWorldBounds): shadows are fitted to it. */
+crowdgpu_result crowdgpu_crowd_set_world_bounds(crowdgpu_crowd crowd, const float lo[3], const float hi[3]);
 crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, double at);
 crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, double at, float fade);
 /* Plans every character up to `time` seconds: once per frame, before recording. Scene times are
  * doubles: a crowd is as exact at 1e9 s as at 0 s. */
 crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time);
+/* The slots, living or free (crowdgpu::Crowd::size). */
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
 /* The CPU threads the library's parallel work shares, the calling thread's included (0: one per core,
  * the default; 1: all on the caller's thread; at most 1024): crowdgpu::setWorkerThreads. Before any
@@ -182,6 +253,7 @@ typedef struct crowdgpu_renderer_settings {
     bool sky;                  /* and then kHorizonColor on every pixel left at the cleared depth: the host
                                   need not clear its colour attachment (loadOp DONT_CARE) */
     bool edge_filter;          /* record_edge_filter anti-aliases the finished picture in compute */
+    uint32_t terrain_samples;  /* room for a terrain of this many heights set later (0: the crowd's own) */
 } crowdgpu_renderer_settings;
 
 /* The C++ defaults: R8G8B8A8_SRGB, D32_SFLOAT, 1 sample, two-pass, GPU animation, LOD, shadows (casters
@@ -206,8 +278,21 @@ crowdgpu_result crowdgpu_renderer_create(const crowdgpu_device* device, crowdgpu
                                          const crowdgpu_renderer_settings* settings, crowdgpu_renderer* out);
 crowdgpu_result crowdgpu_renderer_record_setup(crowdgpu_renderer renderer, VkCommandBuffer cmd);
 void crowdgpu_renderer_setup_completed(crowdgpu_renderer renderer);
+/* `crowd`: the renderer's crowd, or one of the same layout (crowdgpu::Renderer::recordCompute). */
 crowdgpu_result crowdgpu_renderer_record_compute(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot,
-                                                 const crowdgpu_frame_view* view);
+                                                 const crowdgpu_frame_view* view, crowdgpu_crowd crowd);
+/* The host's device samples of a frame (crowdgpu::DeviceSamples): one crowdgpu_device_sample per slot. */
+typedef struct crowdgpu_device_sample {
+    float time, x, z, heading; /* time relative to the frame's (NaN: no sample); heading NaN: towards the motion */
+} crowdgpu_device_sample;
+typedef struct crowdgpu_device_samples {
+    VkBuffer buffer;
+    VkDeviceSize offset, size;
+} crowdgpu_device_samples;
+/* record_compute with the host's device samples for the crowd's device-driven characters. */
+crowdgpu_result crowdgpu_renderer_record_compute_samples(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot,
+                                                         const crowdgpu_frame_view* view, crowdgpu_crowd crowd,
+                                                         const crowdgpu_device_samples* samples);
 crowdgpu_result crowdgpu_renderer_record_shadows(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
 crowdgpu_result crowdgpu_renderer_record_ground(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);
 crowdgpu_result crowdgpu_renderer_record_characters(crowdgpu_renderer renderer, VkCommandBuffer cmd, uint32_t slot);

@@ -15,6 +15,7 @@ enum class ErrorCode {
     WrongOrder = 5,        // a record call out of order, or before setup was recorded
     LoadFailed = 6,        // a model file that cannot be read or is not a usable glTF character
     Vulkan = 7,            // a Vulkan call failed (the message names it and its VkResult)
+    CapacityExceeded = 8,  // a spawn past the crowd's capacity for that model (Crowd::spawn)
 };
 
 // Every failure of the library throws this: a one-line message that says what and where, in the

@@ -9,8 +9,10 @@
 //                                 submission has finished (frees its staging memory).
 //   per frame, in frame slot s (0 .. framesInFlight-1, the host's; wait for the slot's previous
 //   frame before recording it again):
-//   recordCompute(cmd, s, view)   outside any rendering pass: motion, culling and LOD, bone
-//                                 palettes, skinning, impostor lists.
+//   recordCompute(cmd, s, view, crowd)
+//                                 outside any rendering pass: the crowd's changes since the last frame
+//                                 (spawns, removals, replans), motion, culling and LOD, bone palettes,
+//                                 skinning, impostor lists.
 //   recordShadows(cmd, s)         outside any rendering pass: the casters into the renderer's own
 //                                 shadow map (when shadows are on).
 //   recordGround(cmd, s)          optional, inside the host's colour pass: a checkered ground, drawn
@@ -22,7 +24,8 @@
 //   recordEdgeFilter(cmd, s, ...) optional, after the host's colour pass: anti-aliasing in compute
 //                                 (RendererSettings::edgeFilter).
 //
-// Nothing in the frame path submits, waits or signals. Depth is 0 at the near plane and 1 at the far
+// Nothing in the frame path submits, waits or signals. A frame the host records and then drops (never
+// submits) is safe: the next frame that finds it never ran uploads again what it carried. Depth is 0 at the near plane and 1 at the far
 // one, tested with LESS; the projection is Vulkan's (y down). Colour is written as linear RGB: an
 // sRGB or float target shows it right. Not thread-safe: one thread records a renderer.
 #pragma once
@@ -195,6 +198,9 @@ struct RendererSettings {
     // 32-byte records (2 MiB); off: neither.
     bool events = true;
     std::uint32_t eventCapacity = 65536;  // records a frame keeps (1 to 4,000,000); the rest are counted
+    // Room for a terrain of this many heights set after the renderer is made (Crowd::setTerrain; 4 bytes each
+    // on the device); the crowd's own terrain when the renderer is made always fits. 0: that one.
+    std::uint32_t terrainSamples = 0;
     // A renderer of the same models in the same order whose baked impostor atlas this one shares
     // instead of baking its own (it must have completed setup); null: bake when impostors turn on.
     const Renderer* impostorsFrom = nullptr;
@@ -228,6 +234,33 @@ struct FrameCounts {
     std::uint32_t shadowCharacters[3];
     std::uint64_t shadowTriangles[3];
     std::uint32_t shadowImpostors;
+    // The frame's device samples (DeviceSamples): made into keys, late (no later than their character's
+    // newest key: ignored), and refused (a non-finite position or an infinite heading).
+    struct {
+        std::uint32_t applied, late, refused;
+    } deviceSamples;
+};
+
+// One sample of a character driven by a device buffer (MotionSource::DeviceSamples), as the host's
+// own pass writes it (std430, 16 bytes): where the character was `time` seconds relative to the
+// frame's time (FrameView::time; 0: at the frame's time; a past sample is negative), on the ground at
+// (x, z) world metres, facing `heading` radians about +y (NaN: towards the motion). A sample whose time
+// is not a number says "nothing new": write NaN for a character without a sample this frame. It
+// becomes a key when it is later than the character's newest, as Crowd::drive's samples do.
+struct DeviceSample {
+    float time;
+    float x, z;
+    float heading;
+};
+// The host's buffer of device samples for a frame: DeviceSample s of slot s at offset + 16 s, for every
+// slot of the crowd (Crowd::size()): `size` bytes from `offset` (at least 16 x slots), the offset a
+// multiple of minStorageBufferOffsetAlignment. Made with VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; the host's
+// writes made visible to VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT storage reads before recordCompute (its
+// barrier), and its next writes wait for this frame's compute-shader reads.
+struct DeviceSamples {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;
+    VkDeviceSize size = 0;
 };
 
 // This frame's skinned characters, for the host's own passes (G-buffer, outline, picking): bind
@@ -304,11 +337,12 @@ std::string viewportProblem(VkPhysicalDevice physicalDevice, const RendererSetti
 
 class Renderer {
 public:
-    // Builds pipelines for settings.target and allocates the crowd's buffers; their contents wait in
-    // recordSetup. Throws Error: Unsupported (a feature missing from Device::enabledFeatures, a
-    // format the device cannot render to), OutOfDeviceMemory (over memoryNeeded's budget), or
-    // InvalidArgument. The crowd must outlive the renderer; it reads it at every recordCompute.
-    Renderer(const Device& device, Crowd& crowd, const RendererSettings& settings);
+    // Builds pipelines for settings.target and allocates buffers for the crowd's slots (its capacity:
+    // Crowd::size()); their contents wait in recordSetup. Throws Error: Unsupported (a feature missing
+    // from Device::enabledFeatures, a format the device cannot render to), OutOfDeviceMemory (over
+    // memoryNeeded's budget), or InvalidArgument. The renderer keeps no reference to the crowd (it keeps
+    // its models alive): each recordCompute is handed the crowd to draw.
+    Renderer(const Device& device, const Crowd& crowd, const RendererSettings& settings);
     ~Renderer();
     Renderer(Renderer&&) noexcept;
     Renderer& operator=(Renderer&&) noexcept;
@@ -317,7 +351,16 @@ public:
     void recordSetup(VkCommandBuffer cmd);
     void setupCompleted();
 
-    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view);
+    // `crowd`: the crowd the renderer was made for, or another of the same layout (the same models in the
+    // same order, each slot's model the same; else Error(InvalidArgument)), advanced to view.time. Uploads
+    // the slots it changed since the last frame (everything for another crowd than the last frame's):
+    // 100 bytes a changed slot. A frame recorded here and never submitted is safe (see above).
+    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view, const Crowd& crowd);
+    // The same with the host's device samples of this frame: they become the keys of the characters driven
+    // by a device buffer, on the GPU, before the motion pass (no CPU copy: a thread a slot). GPU animation only. Refused, before anything is recorded, for a buffer smaller than the slots'
+    // samples, an unaligned offset, or a crowd made without driven keys.
+    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view, const Crowd& crowd,
+                       const DeviceSamples& samples);
     void recordShadows(VkCommandBuffer cmd, std::uint32_t slot);
     void recordGround(VkCommandBuffer cmd, std::uint32_t slot) const;
     void recordCharacters(VkCommandBuffer cmd, std::uint32_t slot);
@@ -336,6 +379,8 @@ public:
                           VkExtent2D extent);
     FrameOutput output() const;
     FrameCounts counts(std::uint32_t slot) const;
+    // Frames recorded and then never submitted, found as their slots came round (their uploads went again).
+    std::uint64_t framesLost() const;
     void setPassObserver(PassObserver observer);
 
     // Between frames, with the GPU idle (the host waits for its frames first): these rebuild

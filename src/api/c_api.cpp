@@ -43,7 +43,7 @@ crowdgpu_result guarded(F&& f) {
     }
 }
 
-crowdgpu_result invalid(const char* message) {
+crowdgpu_result invalid(const std::string& message) {
     lastError = message;
     return CROWDGPU_ERROR_INVALID_ARGUMENT;
 }
@@ -73,7 +73,21 @@ crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     r.ground = s.ground;
     r.sky = s.sky;
     r.edgeFilter = s.edge_filter;
+    r.terrainSamples = s.terrain_samples;
     return r;
+}
+
+crowdgpu::Character characterOf(const crowdgpu_character& c) {
+    crowdgpu::Character character;
+    character.model = c.model, character.clip = c.clip, character.phase = c.phase, character.speed = c.speed;
+    std::memcpy(character.position, c.position, sizeof character.position);
+    character.heading = c.heading, character.scale = c.scale;
+    std::memcpy(character.tint, c.tint, sizeof character.tint);
+    if (c.motion < CROWDGPU_MOTION_BEHAVIOUR || c.motion > CROWDGPU_MOTION_DEVICE_SAMPLES)
+        throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument,
+                              "a character's motion is " + std::to_string(static_cast<int>(c.motion)) + ", not 0 to 2");
+    character.motion = static_cast<crowdgpu::MotionSource>(c.motion);
+    return character;
 }
 
 crowdgpu::FrameView viewOf(const crowdgpu_frame_view& v) {
@@ -194,17 +208,137 @@ crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_
     });
 }
 
-crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* c, uint32_t* index) {
+crowdgpu_result crowdgpu_crowd_create(const crowdgpu_model* models, uint32_t model_count,
+                                      const crowdgpu_character* characters, uint32_t count,
+                                      const crowdgpu_capacity* capacity_in, uint32_t seed, crowdgpu_behaviour behaviour,
+                                      crowdgpu_crowd* out) {
+    if (!out || !models || model_count == 0 || (count > 0 && !characters))
+        return invalid("crowdgpu_crowd_create: no models, characters NULL with a count, or out NULL");
+    return guarded([&] {
+        std::vector<crowdgpu::Model> list;
+        for (uint32_t i = 0; i < model_count; ++i) {
+            if (!models[i]) throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument, "crowdgpu_crowd_create: a NULL model");
+            list.push_back(models[i]->model);
+        }
+        std::vector<crowdgpu::Character> people;
+        people.reserve(count);
+        for (uint32_t i = 0; i < count; ++i) people.push_back(characterOf(characters[i]));
+        crowdgpu::CrowdCapacity capacity;
+        if (capacity_in) {
+            if (capacity_in->per_model) capacity.perModel.assign(capacity_in->per_model, capacity_in->per_model + model_count);
+            capacity.drivenKeys = capacity_in->driven_keys;
+        }
+        *out = new crowdgpu_crowd_t{
+            crowdgpu::Crowd(std::move(list), std::move(people), static_cast<crowdgpu::Behaviour>(behaviour), seed, capacity)};
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_character* c, crowdgpu_handle* handle) {
     if (!crowd || !c) return invalid("crowdgpu_crowd_spawn: crowd or character is NULL");
     return guarded([&] {
-        crowdgpu::Character character;
-        character.model = c->model, character.clip = c->clip, character.phase = c->phase, character.speed = c->speed;
-        std::memcpy(character.position, c->position, sizeof character.position);
-        character.heading = c->heading, character.scale = c->scale;
-        std::memcpy(character.tint, c->tint, sizeof character.tint);
-        const uint32_t i = crowd->crowd.spawn(character);
-        if (index) *index = i;
+        const crowdgpu::CharacterHandle h = crowd->crowd.spawn(characterOf(*c));
+        if (handle) *handle = {h.slot, h.generation};
     });
+}
+
+crowdgpu_result crowdgpu_crowd_remove(crowdgpu_crowd crowd, crowdgpu_handle handle) {
+    if (!crowd) return invalid("crowdgpu_crowd_remove: crowd is NULL");
+    return guarded([&] { crowd->crowd.remove({handle.slot, handle.generation}); });
+}
+
+crowdgpu_result crowdgpu_crowd_spawn_batch(crowdgpu_crowd crowd, const crowdgpu_character* characters, size_t count,
+                                           crowdgpu_handle* handles) {
+    if (!crowd) return invalid("crowdgpu_crowd_spawn_batch: crowd is NULL");
+    if (count > 0 && (!characters || !handles))
+        return invalid("crowdgpu_crowd_spawn_batch: characters or handles is NULL for a batch of " +
+                       std::to_string(count));
+    return guarded([&] {
+        std::vector<crowdgpu::Character> batch(count);
+        for (size_t i = 0; i < count; ++i) batch[i] = characterOf(characters[i]);
+        std::vector<crowdgpu::CharacterHandle> made(count);
+        crowd->crowd.spawn(batch.data(), count, made.data());
+        for (size_t i = 0; i < count; ++i) handles[i] = {made[i].slot, made[i].generation};
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_remove_batch(crowdgpu_crowd crowd, const crowdgpu_handle* handles, size_t count) {
+    if (!crowd) return invalid("crowdgpu_crowd_remove_batch: crowd is NULL");
+    if (count > 0 && !handles)
+        return invalid("crowdgpu_crowd_remove_batch: handles is NULL for a batch of " + std::to_string(count));
+    return guarded([&] {
+        std::vector<crowdgpu::CharacterHandle> batch(count);
+        for (size_t i = 0; i < count; ++i) batch[i] = {handles[i].slot, handles[i].generation};
+        crowd->crowd.remove(batch.data(), count);
+    });
+}
+
+bool crowdgpu_crowd_alive(crowdgpu_crowd crowd, crowdgpu_handle handle) {
+    return crowd && crowd->crowd.alive({handle.slot, handle.generation});
+}
+
+crowdgpu_result crowdgpu_crowd_handle(crowdgpu_crowd crowd, uint32_t slot, crowdgpu_handle* handle) {
+    if (!crowd || !handle) return invalid("crowdgpu_crowd_handle: crowd or handle is NULL");
+    return guarded([&] {
+        const crowdgpu::CharacterHandle h = crowd->crowd.handle(slot);
+        *handle = {h.slot, h.generation};
+    });
+}
+
+uint32_t crowdgpu_crowd_live_count(crowdgpu_crowd crowd) { return crowd ? crowd->crowd.liveCount() : 0; }
+
+crowdgpu_result crowdgpu_crowd_drive(crowdgpu_crowd crowd, const crowdgpu_handle* characters, const double* times,
+                                     const float* x, const float* z, const float* headings, uint32_t count,
+                                     uint32_t* applied, uint32_t* late) {
+    if (!crowd) return invalid("crowdgpu_crowd_drive: crowd is NULL");
+    return guarded([&] {
+        static_assert(sizeof(crowdgpu_handle) == sizeof(crowdgpu::CharacterHandle));
+        const crowdgpu::DriveResult r = crowd->crowd.drive(
+            {reinterpret_cast<const crowdgpu::CharacterHandle*>(characters), times, x, z, headings, count});
+        if (applied) *applied = static_cast<uint32_t>(r.applied);
+        if (late) *late = static_cast<uint32_t>(r.late);
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_set_driven_timing(crowdgpu_crowd crowd, double delay, double extrapolate) {
+    if (!crowd) return invalid("crowdgpu_crowd_set_driven_timing: crowd is NULL");
+    return guarded([&] { crowd->crowd.setDrivenTiming({delay, extrapolate}); });
+}
+
+crowdgpu_result crowdgpu_crowd_gait_settings(crowdgpu_crowd crowd, uint32_t model, crowdgpu_gait_settings* out) {
+    if (!crowd || !out) return invalid("crowdgpu_crowd_gait_settings: crowd or out is NULL");
+    return guarded([&] {
+        const crowdgpu::GaitSettings g = crowd->crowd.gaitSettings(model);
+        *out = {g.walkFrom, g.runFrom, g.hysteresis, g.fade, g.turnRate, g.turnSpeed};
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_set_gait_settings(crowdgpu_crowd crowd, uint32_t model, const crowdgpu_gait_settings* s) {
+    if (!crowd || !s) return invalid("crowdgpu_crowd_set_gait_settings: crowd or settings is NULL");
+    return guarded([&] {
+        crowd->crowd.setGaitSettings(model, {s->walk_from, s->run_from, s->hysteresis, s->fade, s->turn_rate, s->turn_speed});
+    });
+}
+
+crowdgpu_result crowdgpu_crowd_set_terrain(crowdgpu_crowd crowd, uint32_t columns, uint32_t rows, const float* heights,
+                                           const float origin[2], const float size[2]) {
+    if (!crowd || ((columns || rows) && (!heights || !origin || !size)))
+        return invalid("crowdgpu_crowd_set_terrain: crowd, heights, origin or size is NULL");
+    return guarded([&] {
+        crowdgpu::Heightfield field;
+        field.columns = columns, field.rows = rows, field.heights = heights;
+        if (origin) field.origin[0] = origin[0], field.origin[1] = origin[1];
+        if (size) field.size[0] = size[0], field.size[1] = size[1];
+        crowd->crowd.setTerrain(field);
+    });
+}
+
+float crowdgpu_crowd_ground_height(crowdgpu_crowd crowd, float x, float z) {
+    return crowd ? crowd->crowd.groundHeight(x, z) : 0.0f;
+}
+
+crowdgpu_result crowdgpu_crowd_set_world_bounds(crowdgpu_crowd crowd, const float lo[3], const float hi[3]) {
+    if (!crowd) return invalid("crowdgpu_crowd_set_world_bounds: crowd is NULL");
+    return guarded([&] { crowd->crowd.setWorldBounds(lo, hi); });
 }
 
 crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, double at) {
@@ -296,6 +430,7 @@ void crowdgpu_renderer_settings_default(crowdgpu_renderer_settings* s) {
     s->ground = d.ground;
     s->sky = d.sky;
     s->edge_filter = d.edgeFilter;
+    s->terrain_samples = d.terrainSamples;
 }
 
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
@@ -336,9 +471,19 @@ void crowdgpu_renderer_setup_completed(crowdgpu_renderer r) {
 }
 
 crowdgpu_result crowdgpu_renderer_record_compute(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot,
-                                                 const crowdgpu_frame_view* view) {
-    if (!r || !view) return invalid("crowdgpu_renderer_record_compute: renderer or view is NULL");
-    return guarded([&] { r->renderer.recordCompute(cmd, slot, viewOf(*view)); });
+                                                 const crowdgpu_frame_view* view, crowdgpu_crowd crowd) {
+    if (!r || !view || !crowd) return invalid("crowdgpu_renderer_record_compute: renderer, view or crowd is NULL");
+    return guarded([&] { r->renderer.recordCompute(cmd, slot, viewOf(*view), crowd->crowd); });
+}
+
+crowdgpu_result crowdgpu_renderer_record_compute_samples(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot,
+                                                         const crowdgpu_frame_view* view, crowdgpu_crowd crowd,
+                                                         const crowdgpu_device_samples* samples) {
+    if (!r || !view || !crowd || !samples)
+        return invalid("crowdgpu_renderer_record_compute_samples: renderer, view, crowd or samples is NULL");
+    return guarded([&] {
+        r->renderer.recordCompute(cmd, slot, viewOf(*view), crowd->crowd, {samples->buffer, samples->offset, samples->size});
+    });
 }
 
 crowdgpu_result crowdgpu_renderer_record_shadows(crowdgpu_renderer r, VkCommandBuffer cmd, uint32_t slot) {

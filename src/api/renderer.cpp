@@ -21,6 +21,8 @@ static_assert(sizeof(crowdgpu::GpuEventHeader) == sizeof(gpu::EventHeader) &&
               offsetof(crowdgpu::GpuEventHeader, capacity) == offsetof(gpu::EventHeader, capacity));
 static_assert(sizeof(crowdgpu::GpuEvent) == sizeof(gpu::EventRecord) &&
               offsetof(crowdgpu::GpuEvent, position) == offsetof(gpu::EventRecord, place));
+static_assert(sizeof(crowdgpu::DeviceSample) == sizeof(gpu::DeviceSample) &&
+              offsetof(crowdgpu::DeviceSample, heading) == offsetof(gpu::DeviceSample, heading));
 static_assert(crowdgpu::kHorizonColor[0] == render::kSkyColor.x && crowdgpu::kHorizonColor[1] == render::kSkyColor.y &&
                   crowdgpu::kHorizonColor[2] == render::kSkyColor.z,
               "the public horizon colour is the fog's");
@@ -96,6 +98,8 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     checkShadowCascades(s.shadowCascades, s.shadowMapSize);
     if (!(s.meshRasterLimit == render::kMeshRasterAutomatic || (s.meshRasterLimit >= 0.0f && s.meshRasterLimit <= 1e6f)))
         throw Error(ErrorCode::InvalidArgument, "the mesh raster limit must lie in [0, 1e6] pixels, or be -1 (automatic)");
+    if (s.terrainSamples > (1u << 25))
+        throw Error(ErrorCode::InvalidArgument, "terrainSamples: " + std::to_string(s.terrainSamples) + " is over 2^25");
     if (s.events && !(s.eventCapacity >= 1 && s.eventCapacity <= 4000000))
         throw Error(ErrorCode::InvalidArgument, "the event capacity must be 1 to 4,000,000 records");
     frame::RecorderOptions o;
@@ -117,6 +121,7 @@ frame::RecorderOptions rendererOptions(const RendererSettings& s) {
     o.meshRasterLimitPixels = s.meshRasterLimit;
     o.events = s.events;
     o.eventCapacity = s.eventCapacity;
+    o.terrainSamples = s.terrainSamples;
     return o;
 }
 
@@ -197,7 +202,7 @@ std::string viewportProblem(VkPhysicalDevice physicalDevice, const RendererSetti
 
 namespace detail {
 
-Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::RecorderOptions& options,
+Renderer makeRenderer(const Device& device, const crowd::Crowd& crowd, const frame::RecorderOptions& options,
                       const RendererSettings& settings) {
     auto data = std::make_unique<RendererData>();
     translated([&] {
@@ -243,8 +248,10 @@ frame::RecorderOptions optionsWithSharedAtlas(const RendererSettings& settings) 
 
 }  // namespace
 
-Renderer::Renderer(const Device& device, Crowd& crowd, const RendererSettings& settings)
-    : Renderer(detail::makeRenderer(device, crowd.data().crowd(), optionsWithSharedAtlas(settings), settings)) {}
+Renderer::Renderer(const Device& device, const Crowd& crowd, const RendererSettings& settings)
+    : Renderer(detail::makeRenderer(device, crowd.data().crowd(), optionsWithSharedAtlas(settings), settings)) {
+    data_->models = crowd.models();  // the layout's models outlive the crowd as long as the renderer needs them
+}
 
 Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
@@ -258,8 +265,14 @@ void Renderer::recordSetup(VkCommandBuffer cmd) {
 
 void Renderer::setupCompleted() { data_->frame->setupCompleted(); }
 
-void Renderer::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view) {
-    detail::translated([&] { data_->frame->recordCompute(cmd, slot, internalView(view)); });
+void Renderer::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view, const Crowd& crowd) {
+    detail::translated([&] { data_->frame->recordCompute(cmd, slot, internalView(view), crowd.data().crowd()); });
+}
+
+void Renderer::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view, const Crowd& crowd,
+                             const DeviceSamples& samples) {
+    const render::DeviceSampleInput input{samples.buffer, samples.offset, samples.size};
+    detail::translated([&] { data_->frame->recordCompute(cmd, slot, internalView(view), crowd.data().crowd(), &input); });
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
@@ -320,8 +333,12 @@ FrameCounts Renderer::counts(std::uint32_t slot) const {
     for (int l = 0; l < 3; ++l)
         result.shadowCharacters[l] = c.shadowCharacters[l], result.shadowTriangles[l] = c.shadowTriangles[l];
     result.shadowImpostors = c.shadowImpostors;
+    const render::IngestTally tally = data_->frame->ingestTally(slot);
+    result.deviceSamples = {tally.applied, tally.late, tally.refused};
     return result;
 }
+
+std::uint64_t Renderer::framesLost() const { return data_->frame->framesLost(); }
 
 void Renderer::setPassObserver(PassObserver observer) { data_->frame->setPassObserver(std::move(observer)); }
 

@@ -14,11 +14,12 @@ struct RendererData {
     RendererSettings settings;
     std::unique_ptr<frame::CrowdRecorder> frame;
     std::unique_ptr<render::EdgeFilter> edgeFilter;  // with settings.edgeFilter
+    std::vector<Model> models;  // the crowd's models, which the frame's layout points into, kept alive
 };
 
 // A renderer with every internal option (a shared impostor atlas, a smaller target limit): the
 // programs' frame driver and the tests. The public constructor goes through the same checks.
-Renderer makeRenderer(const Device& device, crowd::Crowd& crowd, const frame::RecorderOptions& options,
+Renderer makeRenderer(const Device& device, const crowd::Crowd& crowd, const frame::RecorderOptions& options,
                       const RendererSettings& settings);
 
 // The internal options for public settings.

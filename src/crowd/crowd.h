@@ -9,6 +9,7 @@
 // segment relative to the crowd's epoch (crowd/epoch.h), and the CPU reference evaluates the same
 // records with the same float arithmetic.
 #include <cstdint>
+#include <deque>
 #include <span>
 #include <utility>
 #include <vector>
@@ -18,10 +19,14 @@
 #include "anim/affine.h"
 #include "anim/clip_library.h"
 #include "crowd/behaviours.h"
+#include "crowd/change_log.h"
+#include "crowd/driven.h"
 #include "crowd/events.h"
 #include "crowd/gaits.h"
 #include "crowd/motion.h"
+#include "crowd/population.h"
 #include "crowd/rhythm.h"
+#include "crowd/terrain.h"
 #include "crowd/segment.h"
 #include "crowd/wake_calendar.h"
 #include "crowd/worker_pool.h"
@@ -47,6 +52,10 @@ struct Character {
     // Bit k: it carries its model's prop k (model/attach_prop.h); kModelProps: the crowd draws them by
     // each prop's share (model::defaultPropsCarried), so a grid gets its variety without choosing.
     std::uint32_t props = kModelProps;
+    // Who moves it: the crowd's behaviour, or the host's samples (crowd/driven.h): from its memory
+    // (Crowd::drive; a character of the behaviour becomes one at its first sample), or from a device
+    // buffer the renderer reads (declared here: the CPU never sees those samples).
+    Driven driven = Driven::No;
 };
 
 struct LayoutOptions {
@@ -87,17 +96,64 @@ float brightnessVariation(std::uint32_t index);
 // World transform of a character: its scale, then its heading, then its position.
 glm::mat4 characterTransform(const Character& character);
 
+// How many characters of each model the crowd holds at most at once: a slot each, fixed when the crowd is
+// made (crowd/population.h). An entry left out, or below the model's initial characters, is that count:
+// a crowd made without one holds exactly its characters (removing one frees a slot for another of its model).
+struct Capacity {
+    std::vector<std::uint32_t> perModel;
+    // Keys each slot keeps for a driven character (crowd/driven.h): the samples around the time drawn,
+    // which lags the newest by the delay. At most 64. 0: kDefaultDrivenKeys when any first character is
+    // driven, else none (no character drivable, the memory saved).
+    std::uint32_t drivenKeys = 0;
+};
+inline constexpr std::uint32_t kMostDrivenKeys = 64;
+inline constexpr std::uint32_t kDefaultDrivenKeys = 8;
+
+// A batch of the host's samples (Crowd::drive), structure of arrays in the host's memory: sample i is
+// characters[i]'s at times[i] (scene seconds) at (x[i], z[i]) (world metres), facing headings[i]
+// (radians about +y) when `headings` is given and the entry is a number (NaN: towards the motion).
+struct SampleBatch {
+    std::span<const Handle> characters;
+    std::span<const double> times;
+    std::span<const float> x, z;
+    std::span<const float> headings;  // empty, or one per sample
+};
+struct DriveResult {
+    std::size_t applied = 0;  // samples that became keys
+    std::size_t late = 0;     // samples no later than their character's newest key: ignored
+};
+
+// What a slot's character looks like on the GPU (CharacterRecord's tint and pose.z): its tint, its scale
+// (0 for a free slot: culling skips it) and the props it carries.
+struct Identity {
+    glm::vec4 tintScale{1.0f};
+    std::uint32_t props = 0;
+    std::uint32_t generation = 0;  // the slot's (crowd/population.h): which character holds it
+};
+
 class Crowd {
 public:
     // The models must outlive the crowd. Throws gpu::Error when a character names a model or clip
-    // that does not exist, or when there are more than MAX_MODELS models.
+    // that does not exist, when there are more than MAX_MODELS models, or when the slots would pass
+    // 2^32. The characters take slots 0 to n-1 in order; each model's spare slots (capacity) follow.
     Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Character> characters,
-          const BehaviourSettings& behaviour = {});
+          const BehaviourSettings& behaviour = {}, const Capacity& capacity = {});
     // A crowd of one model.
     Crowd(const model::SkinnedModel& model, std::vector<Character> characters, const BehaviourSettings& behaviour = {});
 
+    // Slots, living or free: every per-character array (here and on the GPU) has this many entries.
     std::uint32_t size() const { return static_cast<std::uint32_t>(characters_.size()); }
+    // Each slot's character, or for a free slot what it last held (its model is the slot's).
     const std::vector<Character>& characters() const { return characters_; }
+    const Population& population() const { return population_; }
+    bool alive(std::uint32_t slot) const { return population_.alive(slot); }
+    // A number that differs between any two crowds made in this process (moves keep it): a renderer
+    // that is handed another crowd uploads it whole.
+    std::uint64_t id() const { return id_; }
+    // The slots' models as one number: two crowds whose slots hold the same models of the same
+    // addresses match (what a renderer laid out for one fits the other).
+    std::uint64_t layoutKey() const { return layoutKey_; }
+    Identity identity(std::uint32_t slot) const;
     const std::vector<const model::SkinnedModel*>& models() const { return models_; }
     const model::SkinnedModel& model(std::uint32_t index) const { return *models_[index]; }
     const model::SkinnedModel& modelOf(std::uint32_t character) const { return *models_[characters_[character].model]; }
@@ -107,9 +163,23 @@ public:
     const BehaviourSettings& behaviour() const { return behaviour_; }
 
     // ---- Driving the crowd ----
-    // Adds a character playing its clip in place under the crowd's behaviour; returns its index.
-    // Renderers size their buffers when they are made: spawn before making one.
-    std::uint32_t spawn(const Character& character);
+    // Adds a character playing its clip in place under the crowd's behaviour, in a free slot of its
+    // model; returns its handle. Its motion is planned from time 0 as the initial characters' is, and
+    // queries before the time the crowd was last advanced to see no events of it. Throws gpu::Error
+    // (CapacityExceeded) when every slot of its model is taken, (InvalidArgument) for a model or clip
+    // that does not exist; nothing changes then.
+    Handle spawn(const Character& character);
+    // A batch: every character checked and the capacity of each model counted before any slot is
+    // taken (a batch that does not fit changes nothing); the slots' planning on every core. handles[i]
+    // names characters[i].
+    void spawn(const Character* characters, std::size_t count, Handle* handles);
+    // The character leaves the crowd; its slot is free for the next of its model. Throws gpu::Error for a
+    // stale handle.
+    void remove(Handle handle);
+    // A batch: every handle checked first (a stale one, or one given twice, refuses the batch whole).
+    void remove(const Handle* handles, std::size_t count);
+    // Throws gpu::Error (InvalidArgument) naming the character when `handle` is stale.
+    void checkHandle(Handle handle) const;
     // From time `at` on (or once its current crossfade ends), walk to `target` (world x, z) with clip
     // `gait` (-1: the model's walk) at `rate` times its speed, turning on the way, and stop there.
     void moveTo(std::uint32_t character, glm::vec2 target, double at, std::int32_t gait = -1, float rate = 1.0f);
@@ -117,15 +187,67 @@ public:
     // with root motion carries the character forward along its heading. Throws gpu::Error for a clip the
     // model lacks (a negative one too: what SkinnedModel::findClip returns for a missing name).
     void play(std::uint32_t character, std::int32_t clip, double at, float fade = 0.3f, float rate = 1.0f);
+    // ---- Driven characters (crowd/driven.h) ----
+    // Each sample becomes its character's next key (a character of the behaviour is driven by the
+    // host's samples from its first one on). The whole batch is refused (gpu::Error naming the first bad
+    // entry and its character), with nothing applied, for a stale handle, a character driven by a device
+    // buffer, a non-finite time or position, an infinite heading, arrays of different lengths, or a crowd
+    // made without driven keys; a sample no later than its character's newest key is ignored and counted
+    // (networks reorder). Several samples of one character in a batch apply in the batch's order. On every
+    // core for a large batch; about 30 ns a sample.
+    DriveResult drive(const SampleBatch& batch);
+    // The delay and extrapolation of every driven character; changes apply to every character at once.
+    void setDrivenTiming(const DrivenTiming& timing);
+    const DrivenTiming& drivenTiming() const { return timing_; }
+    // A model's gait bands (for keys made from now on).
+    void setGaitBands(std::uint32_t model, const GaitBands& bands);
+    const GaitBands& gaitBands(std::uint32_t model) const { return bands_[model]; }
+    // Each model's gaits as the GPU reads them.
+    const std::vector<gpu::DrivenModel>& drivenModels() const { return drivenModels_; }
+    Driven drivenBy(std::uint32_t slot) const { return characters_[slot].driven; }
+    std::uint32_t drivenKeysPerSlot() const { return drivenKeysPerSlot_; }
+    // The keys of the characters driven from the host's memory (empty until the first sample).
+    const DrivenKeys& drivenKeys() const { return keys_; }
+    // The keys made after change generation `since` (crowd/change_log.h), as (slot, key index) pairs in
+    // the order made; false when the log no longer reaches back (a reader then takes every slot's ring).
+    template <class F>
+    bool forEachKeySince(std::uint64_t since, F&& f) const {
+        return forEachKeyListSince(since, [&](const KeyLogList& list) {
+            for (const auto& [slot, index] : list)
+                if (keyStillHeld(slot, index)) f(slot, index);
+        });
+    }
+    // The same a list at a time (one per change generation, in order), for a reader that stages a list on
+    // every core: an entry is a key when keyStillHeld says so (a late sample's entry holds kNoKeySlot).
+    using KeyLogList = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+    static constexpr std::uint32_t kNoKeySlot = ~0u;
+    template <class F>
+    bool forEachKeyListSince(std::uint64_t since, F&& f) const {
+        if (since == ChangeLog::kEverything || since < keyLogFirst_) return false;
+        for (std::uint64_t g = since + 1; g <= changes_.openGeneration(); ++g) f(keyLogOf(g));
+        return true;
+    }
+    bool keyStillHeld(std::uint32_t slot, std::uint32_t index) const {
+        return slot != kNoKeySlot && index + keys_.perSlot() >= keys_.count(slot);  // still in its ring
+    }
+    std::size_t keysSince(std::uint64_t since) const;
+    // The clock the keys are evaluated on for a frame at `time`: seconds since the epoch, less the delay.
+    float drivenClock(double time) const;
+
     // Plans every character's segments up to `time`. A behaviour's character whose episode ended
     // goes straight to the episode holding `time` (its start is closed form), so a late time costs one
     // episode of planning, as an early one does. Going back in time starts every plan over from there
     // (commands given so far are forgotten).
     void advanceTo(double time);
-    // The characters whose segment the last advanceTo (or command) changed, and a counter of those
-    // calls, so a renderer can upload just them when it has seen every generation before.
+    // The characters whose segment the last advanceTo changed (with those spawned since the one before),
+    // and a counter of advanceTo calls.
     const std::vector<std::uint32_t>& lastChanged() const { return lastChanged_; }
     std::uint64_t generation() const { return generation_; }
+    // The slots whose record or identity changed (replans, spawns, removals), for renderers: a
+    // renderer seals the open generation when it takes the changes for a frame (crowd/change_log.h).
+    // Sealing changes nothing a host sees: it is the log's bookkeeping.
+    const ChangeLog& changes() const { return changes_; }
+    std::uint64_t sealChanges() const;
     // Each character's current segment relative to epoch(): what the GPU's motion pass evaluates at
     // (float)(time - epoch()).
     const std::vector<gpu::MotionRecord>& segments() const { return segments_; }
@@ -148,6 +270,8 @@ public:
     // replanned more than once in the last advanceTo), or the current one's start when
     // advanceTo skipped whole episodes to reach it.
     double knownFrom(std::uint32_t index) const { return knownFrom_[index]; }
+    // When the character in slot `index` was spawned (-infinity for the crowd's first characters).
+    double bornAt(std::uint32_t index) const { return bornAt_[index]; }
     // The segment `index` followed before its current one (valid when knownFrom() is finite and before
     // plans()[index].start).
     const Segment& previousPlan(std::uint32_t index) const { return previous_[index]; }
@@ -172,13 +296,36 @@ public:
     // current plans. Throws gpu::Error for a character that does not exist or a window it forgot.
     void events(std::span<const std::uint32_t> characters, double from, double to, std::vector<FiredEvent>& out) const;
 
-    // Centre and radius of the ground the crowd stands on (and may walk over), and its tallest model's height.
+    // Centre and radius of the ground the living characters stand on (and may walk over), and the
+    // tallest of them (a crowd with nobody: its first model's height). Measured again (over every slot)
+    // only when the population changed since the last call, or the driven characters' samples reached
+    // further; world bounds, when set, give the ground instead, at once.
     glm::vec3 center() const;
     float radius() const;
     float tallestHeight() const;
+    // The ground every character stands on (crowd/terrain.h): its height is added to each character's y
+    // wherever it is. Any time (a renderer uploads it at its next frame); the default is flat (y = 0).
+    void setTerrain(const Terrain& terrain);
+    const Terrain& terrain() const { return terrain_; }
+    // Counts setTerrain calls: a renderer uploads the heights when it differs.
+    std::uint64_t terrainVersion() const { return terrainVersion_; }
+
+    // The ground the crowd may cover, from the host (its world, its simulation's domain): shadows are
+    // fitted to it and it never moves as characters come and go. Empty (lo > hi): measured from the
+    // characters.
+    void setWorldBounds(const glm::vec3& lo, const glm::vec3& hi);
 
 private:
-    void addCharacter(const Character& character);
+    // What is wrong with `character` in this crowd ("names model 5 of 2": its model, clip, driving), or "".
+    std::string characterProblem(const Character& character) const;
+    // Plans slot `slot`'s character (characters_[slot], living) from time 0 afresh: planSlot touches the
+    // slot's own state alone (spawns plan on every core), noteStarted the lists every slot shares.
+    void startSlot(std::uint32_t slot);
+    void planSlot(std::uint32_t slot);
+    void noteStarted(std::uint32_t slot);
+    // f(i) for i in [0, count), on every core for a large batch (each i touching its own slot alone).
+    template <class F>
+    void forEachOfBatch(std::size_t count, const F& f);
     // Plans character `character` up to `time`; returns the segments it planned.
     // Segments that left previous_ while the window since the last advance still needs them go to
     // `earlier`, in order.
@@ -199,12 +346,62 @@ private:
     void animateState(std::uint32_t index, const MotionState& state, std::span<gpu::BoneRows> out,
                       std::span<anim::Affine> world = {}) const;
     static void writePose(const MotionState& state, gpu::CharacterRecord& record);
+    // Throws gpu::Error for a slot out of range or free.
     void checkCharacter(std::uint32_t character) const;
+    // stateAt before the terrain: what planning continues from (a segment's y is the character's own).
+    MotionState flatStateAt(std::uint32_t index, double time) const;
+    // The state raised onto the terrain.
+    MotionState onGround(MotionState state) const;
+    // Throws gpu::Error (Unsupported) for a character driven by a device buffer: the CPU does not know its motion.
+    void checkKnowable(std::uint32_t character) const;
+    // Makes a character of the behaviour driven by the host's samples: it holds where it is until its first key.
+    void startDriving(std::uint32_t slot);
+    // The state of a driven character (one with keys) at `time`.
+    MotionState drivenState(std::uint32_t slot, double time) const;
+    // Throws gpu::Error naming the first bad sample; returns whether any sample is for a character of
+    // the behaviour (its first: it becomes driven).
+    bool checkBatch(const SampleBatch& batch) const;
+    void applySample(std::size_t i, const SampleBatch& batch, std::uint64_t generation, std::size_t& late);
+    const KeyLogList& keyLogOf(std::uint64_t generation) const;
     void command(std::uint32_t character, double at);
     PlanContext planContext(std::uint32_t character) const;
 
     std::vector<const model::SkinnedModel*> models_;
     std::vector<Character> characters_;
+    Population population_;
+    mutable ChangeLog changes_;
+    // Per slot: the time its character was spawned at (-infinity for the crowd's first characters):
+    // events before it are not its.
+    std::vector<double> bornAt_;
+    std::uint64_t id_ = 0, layoutKey_ = 0;
+    // Driven characters: the timing, each model's bands and GPU entry, the keys of host samples, and
+    // per change generation the keys made in it (slot, index), the last ChangeLog::kKeptGenerations.
+    Terrain terrain_;
+    std::uint64_t terrainVersion_ = 0;
+    DrivenTiming timing_;
+    std::vector<GaitBands> bands_;
+    std::vector<gpu::DrivenModel> drivenModels_;
+    std::uint32_t drivenKeysPerSlot_ = 0;
+    DrivenKeys keys_;
+    // The bounds of center() and radius(): the host's world, or measured (with the population's version
+    // they were measured at, and the reach of the driven samples so far).
+    struct Bounds {
+        glm::vec3 lo{1e30f}, hi{-1e30f};
+        glm::vec3 center{0.0f};
+        float farthest = 0.0f;  // from the centre
+        float tallest = 0.0f;
+    };
+    Bounds world_;
+    mutable Bounds measured_;
+    mutable std::uint64_t measuredVersion_ = ~0ull;
+    Bounds drivenReach_;  // the samples of host-driven characters
+    std::uint64_t reachVersion_ = 0;  // counts drivenReach_'s growths
+    const Bounds& bounds() const;
+    mutable std::deque<KeyLogList> keyLog_;  // sealed, keyLogFirst_ + 1 on
+    mutable KeyLogList keyLogOpen_;
+    mutable std::uint64_t keyLogFirst_ = 0;
+    std::vector<std::uint32_t> batchStamps_;  // per slot: the last batch that had a sample of it
+    std::uint32_t batch_ = 0;
     anim::ClipLibrary library_;
     std::vector<Gaits> gaits_;
     std::vector<Rhythm> rhythms_;
@@ -233,6 +430,10 @@ private:
     std::vector<std::uint32_t> lastChanged_;
     std::vector<std::uint8_t> changed_;  // replanned in this advance (set by replan, cleared after)
     std::vector<std::uint32_t> added_;   // characters added since the last advance
+    // A batch's per-entry results found on every core: spawns' wake times, whether a slot is new to
+    // the change log's open generation.
+    std::vector<double> batchWakes_;
+    std::vector<std::uint8_t> batchFresh_;
     WakeCalendar calendar_;              // when each character's plan next runs out
     std::vector<std::uint32_t> due_;     // the characters this advance visits
     std::vector<double> dueWakes_;       // and when each next wakes, found beside its planning

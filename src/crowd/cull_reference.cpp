@@ -131,6 +131,11 @@ VisibleLists cullOnCpu(const gpu::CullUniforms& cull, std::span<const gpu::Chara
     };
     for (std::uint32_t c = 0; c < characters.size(); ++c) {
         const gpu::CharacterRecord& character = characters[c];
+        if (!(character.tint.w > 0.0f)) {  // a free slot, as cull.comp skips it
+            lodState[c] = 0u;
+            shadow.states[c] = 0u;
+            continue;
+        }
         const glm::vec4 sphere = worldSphere(character, models[character.ids.x]);
         const bool inView = cull.flags.y == 0u || sphereInFrustum(cull.planes, sphere);
         const float size = projectedDiameter(sphere, cull.camera);

@@ -8,9 +8,11 @@
 // the segments every kEpochSeconds.
 #include <cmath>
 
+#include "gpu_types.h"
+
 namespace crowd {
 
-inline constexpr double kEpochSeconds = 64.0;
+inline constexpr double kEpochSeconds = EPOCH_SECONDS;
 
 inline double epochOf(double time) { return std::floor(time / kEpochSeconds) * kEpochSeconds; }
 

@@ -98,7 +98,7 @@ glm::vec2 travelled(const gpu::MotionRecord& segment, float elapsed, const anim:
 }  // namespace
 
 void sealSegment(gpu::MotionRecord& segment, const anim::ClipLibrary& library, std::uint32_t model) {
-    const glm::vec2 end = segment.phase.w != 0.0f ? travelledCurving(segment, windowOf(segment), library, model)
+    const glm::vec2 end = segment.phase.w == MOTION_ROOT ? travelledCurving(segment, windowOf(segment), library, model)
                                                   : glm::vec2(0.0f);
     segment.clips.z = std::bit_cast<std::uint32_t>(end.x);
     segment.clips.w = std::bit_cast<std::uint32_t>(end.y);
@@ -109,7 +109,7 @@ MotionState evaluateMotion(const gpu::MotionRecord& segment, float time, const a
     const float elapsed = std::max(time - segment.timing.x, 0.0f);
     MotionState state;
     state.position = glm::vec3(segment.origin);
-    if (segment.phase.w != 0.0f) {
+    if (segment.phase.w == MOTION_ROOT) {
         const glm::vec2 offset = travelled(segment, elapsed, library, model);
         state.position.x += offset.x;
         state.position.z += offset.y;

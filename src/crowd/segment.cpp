@@ -36,7 +36,7 @@ gpu::MotionRecord steadyFrom(const Segment& segment, double at, const anim::Clip
     const double phase = phaseAfterFade(segment, at - segment.start);
     const float heading = motionHeading(m, window);
     glm::vec3 position(m.origin);
-    if (m.phase.w != 0.0f) {
+    if (m.phase.w == MOTION_ROOT) {
         const glm::vec2 curvedEnd(std::bit_cast<float>(m.clips.z), std::bit_cast<float>(m.clips.w));
         const glm::vec2 straight = rootBetween(library, model, m.clips.y, motionPhase(m, window), phase);
         const glm::vec2 offset = curvedEnd + turnToWorld(straight, heading);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "gpu/one_shot_commands.h"
 #include "gpu/pipeline.h"
 #include "gpu/setup_queue.h"
 #include "gpu/vulkan_context.h"
@@ -61,9 +62,13 @@ std::string viewportProblem(const VkPhysicalDeviceLimits& limits, const std::str
     return {};
 }
 
-CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options)
+CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RecorderOptions& options)
     : context_(context),
-      crowd_(crowd),
+      layoutKey_(crowd.layoutKey()),
+      slotCount_(crowd.size()),
+      models_(crowd.models()),
+      propSets_(render::impostorPropSets(crowd)),
+      ledger_(context, options.framesInFlight),
       target_(options.target),
       framesInFlight_(checkedFramesInFlight(options.framesInFlight)),
       pool_(context, crowd.models()),
@@ -71,16 +76,18 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
                meshSlots(options, crowd)),
       lists_(context, pool_, buffers_, options.framesInFlight, meshCapacityInEffect(options, crowd),
              options.method == skin::Method::VertexShader),
+      terrain_(context, crowd, options.terrainSamples, options.framesInFlight),
       cullPass_(context, pool_, buffers_, lists_, options.framesInFlight),
-      animationPass_(context, crowd, buffers_, lists_, options.framesInFlight),
+      animationPass_(context, crowd, buffers_, lists_, terrain_, options.framesInFlight),
       eventPass_(options.events ? std::make_unique<render::EventPass>(context, crowd, animationPass_, buffers_, lists_,
-                                                                      options.framesInFlight, options.eventCapacity)
+                                                                      terrain_, options.framesInFlight,
+                                                                      options.eventCapacity)
                                 : nullptr),
       maxTargetDimension_(options.maxTargetDimension),
-      shape_{crowd.center(), crowd.radius(), crowd.tallestHeight()},
+      shape_{crowd.center(), crowd.radius(), crowd.tallestHeight(), crowd.terrain().lowest()},
       shadowMap_(context, options.shadowMapSize),
       groundSunlight_(context, shadowMap_),
-      scene_(context, options.framesInFlight, pool_, shadowMap_, groundSunlight_, options.target,
+      scene_(context, options.framesInFlight, pool_, shadowMap_, groundSunlight_, terrain_, options.target,
              {!options.pointSampledGround, !options.perPixelGroundShadows}),
       draw_(context, pool_, buffers_, lists_, scene_.setLayout(), options.target),
       method_(createMethod(options.method)),
@@ -103,6 +110,12 @@ CrowdRecorder::CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& cr
       stages_(options.framesInFlight, Stage::Idle),
       views_(options.framesInFlight),
       cascades_(options.framesInFlight) {
+    // The shadow map and the ground's sunlight are bound even while shadows are off: a valid layout from
+    // setup on (every frame that draws shadows leaves them so too), never from a frame that may be dropped.
+    gpu::runOneShot(context, [map = &shadowMap_, sunlight = &groundSunlight_](VkCommandBuffer cmd) {
+        map->clear(cmd);
+        sunlight->recordAllLit(cmd);
+    });
     if (cull_.impostors) enableImpostors();
     setShadowRaster(options.shadowRaster);
     setShadowCascades(options.shadowCascades);
@@ -185,8 +198,13 @@ void CrowdRecorder::checkStage(const char* call, std::uint32_t slot, Stage neede
                          gpu::ErrorKind::WrongOrder);
 }
 
-void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const render::FrameView& view) {
+void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const render::FrameView& view,
+                                  const crowd::Crowd& crowd, const render::DeviceSampleInput* samples) {
     checkSlot("recordCompute", slot);
+    if (crowd.layoutKey() != layoutKey_ || crowd.size() != slotCount_)
+        throw gpu::Error("recordCompute: the crowd given is not laid out as the one the renderer was made for (" +
+                         std::to_string(crowd.size()) + " slots, the renderer's " + std::to_string(slotCount_) +
+                         "; the same models, each slot's the same)");
     if (setupPending())
         throw gpu::Error("recordCompute: setup work waits to be recorded (call recordSetup and submit it first)",
                          gpu::ErrorKind::WrongOrder);
@@ -201,31 +219,47 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
                          render::visibilityFits(context_.properties.limits, view.viewport.extent)
                              ? gpu::ErrorKind::InvalidArgument
                              : gpu::ErrorKind::Unsupported);
+    if (samples && animationThisFrame() != render::AnimationPath::Gpu)
+        throw gpu::Error("recordCompute: device samples need the GPU animation path (the CPU never sees them)");
+    if (samples) animationPass_.checkDeviceSamples(*samples);  // before anything is recorded
     views_[slot] = view;
+    // Where the crowd stands now (the population changes; the host's world bounds, when set, do not),
+    // above the terrain's lowest point.
+    shape_ = {crowd.center(), crowd.radius(), crowd.tallestHeight(), crowd.terrain().lowest()};
     cascades_[slot] = shadowCascadesOf(view);
+    // What changed since the last frame (or since a frame that never ran): render/frame_ledger.h.
+    terrain_.check(crowd);
+    const render::FrameLedger::Uploads uploads = ledger_.begin(cmd, slot, crowd.id(), crowd.sealChanges());
+    const std::uint64_t since = uploads.since;
+    terrain_.recordUpload(cmd, slot, crowd, uploads.resend);
+    // The static ceiling skins everyone once: again when someone came or went.
+    if (crowd.population().version() != populationVersion_) method_->invalidateSkinning();
+    populationVersion_ = crowd.population().version();
 
-    // The CPU path samples every character's clips here; the GPU path moves them in its passes.
+    // The CPU path samples every character's clips here; the GPU path moves them in its passes. The
+    // segments and identities go up first on either (the CPU path's records take the identities).
+    animationPass_.recordSegmentUpload(cmd, slot, crowd, since);
+    if (samples) animationPass_.recordDeviceSamples(cmd, slot, crowd, *samples, view.time);
     const std::optional<render::AnimationPath> path = animationThisFrame();
     if (path == render::AnimationPath::Cpu)
-        crowd_.animate(view.time, buffers_.boneStaging(slot), buffers_.boneOffsets(), buffers_.mutableRecords());
+        crowd.animate(view.time, buffers_.boneStaging(slot), buffers_.boneOffsets(), buffers_.mutableRecords());
     else if (cull_.mode == render::CullMode::Cpu)
-        buffers_.updateRecords(crowd_, view.time);  // the CPU reference culls from CPU-side records
+        buffers_.updateRecords(crowd, view.time);  // the CPU reference culls from CPU-side records
 
     if (path == render::AnimationPath::Cpu) {
         buffers_.recordCpuAnimationUpload(cmd, slot);
         gpu::passDone(passes_, cmd, "upload");
     } else if (path == render::AnimationPath::Gpu) {
         buffers_.recordRecordsUploadIfStale(cmd, slot);  // after bone blocks left the mesh slots
-        animationPass_.recordMotion(cmd, slot, view.time);
+        animationPass_.recordMotion(cmd, crowd, view.time);
         gpu::passDone(passes_, cmd, "motion");
     }
     const bool perCharacterDraws = method_->drawInput() == render::DrawInput::BindPosePerCharacter;
     cullPass_.record(cmd, slot, cullUniforms(view, cascades_[slot]), cull_.mode, method_->fixedLayout(), perCharacterDraws);
     gpu::passDone(passes_, cmd, "cull");
     if (eventPass_) {
-        // Culling said who is in view; the GPU path uploaded the segments already, the others have not.
-        if (path != render::AnimationPath::Gpu) animationPass_.recordSegmentUpload(cmd, slot);
-        eventPass_->record(cmd, slot, view.time);
+        // Culling said who is in view.
+        eventPass_->record(cmd, slot, crowd, since, view.time);
         gpu::passDone(passes_, cmd, "events");
     }
     if (path == render::AnimationPath::Gpu) {
@@ -253,11 +287,6 @@ void CrowdRecorder::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const
     }
     if (impostorRaster_ || meshPathOn_[slot]) gpu::passDone(passes_, cmd, "raster");
     if (impostorDraw_) impostorDraw_->recordDraws(cmd);
-    if (!shadows_ && !shadowMapReady_) {  // sampled by no one, but bound: a valid layout
-        shadowMap_.clear(cmd);
-        groundSunlight_.recordAllLit(cmd);
-    }
-    shadowMapReady_ = shadowMapReady_ || !shadows_;
     updateUniforms(slot, view);
     stages_[slot] = Stage::Computed;
 }
@@ -274,7 +303,7 @@ gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view) con
 gpu::CullUniforms CrowdRecorder::cullUniforms(const render::FrameView& view, const render::ShadowCascades& cascades) const {
     const render::Camera camera = render::cameraOf(view);
     gpu::CullUniforms uniforms = render::makeCullUniforms(
-        cull_, view.projection * view.view, camera.eye, camera.verticalFov, view.viewport.extent.height, crowd_.size(),
+        cull_, view.projection * view.view, camera.eye, camera.verticalFov, view.viewport.extent.height, slotCount_,
         lists_.bucketCount(), context_.properties.limits.maxComputeWorkGroupCount[0]);
     // With shadows, characters out of view whose shadows may fall into it are kept (and skinned) too,
     // those outside the shadow map's volume are not, and each caster's level comes from its size there.
@@ -299,6 +328,7 @@ void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& 
     gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, 0.5f / (camera.farPlane + 1.0f),
                                                          cascades, shadows_, shadowMap_.size());
     scene.shadow.w = static_cast<float>(groundSunlight_.firstLevel(view.viewport.extent));
+    scene.terrain = terrain_.grid();
     scene_.update(slot, scene);
 }
 
@@ -343,7 +373,6 @@ void CrowdRecorder::recordShadows(VkCommandBuffer cmd, std::uint32_t slot) {
     // The ground's sunlight from the finished map, in compute, for the ground's one fetch a pixel.
     groundSunlight_.record(cmd, cascades, render::kShadowDepthBias, 1.0f / static_cast<float>(shadowMap_.size()),
                            groundSunlight_.firstLevel(views_[slot].viewport.extent));
-    shadowMapReady_ = true;
     stages_[slot] = Stage::Shadowed;
     gpu::passDone(passes_, cmd, "shadow");
 }
@@ -370,7 +399,7 @@ void CrowdRecorder::drawGround(VkCommandBuffer cmd, std::uint32_t slot) const {
     gpu::setViewportAndScissor(cmd, view.viewport);
     const render::ScenePush push{glm::vec4(camera.eye, 1.0f),
                                  glm::vec4(shape_.center.x, 0.0f, shape_.center.z, camera.farPlane)};
-    scene_.recordGround(cmd, slot, push);
+    scene_.recordGround(cmd, slot, push, terrain_.grid());
 }
 
 void CrowdRecorder::recordCharacters(VkCommandBuffer cmd, std::uint32_t slot) {
@@ -433,7 +462,7 @@ void CrowdRecorder::enableImpostors() {
         scene_.update(0, render::makeSceneUniforms(glm::mat4(1.0f), 0.0f));
         // The atlas keeps the context it was made with alive: another recorder may share it.
         atlas_ = std::shared_ptr<const render::ImpostorAtlas>(
-            new render::ImpostorAtlas(context_, pool_, crowd_.models(), render::impostorPropSets(crowd_),
+            new render::ImpostorAtlas(context_, pool_, models_, propSets_,
                                       scene_.setLayout(), scene_.set(0), impostorSettings_),
             [owner = contextOwner_](const render::ImpostorAtlas* atlas) { delete atlas; });
     } else if (atlas_->plan().modelCount() != pool_.modelCount()) {
@@ -509,9 +538,9 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
 }
 
 std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
-    const double n = std::max(crowd_.size(), 1u);
+    const double n = std::max(slotCount_, 1u);
     // The mesh cut's lists and tie bits grow with the crowd; its histograms do not.
-    const render::MeshCutSizes cut = render::meshCutSizes(crowd_.size(), lists_.meshCapacity());
+    const render::MeshCutSizes cut = render::meshCutSizes(slotCount_, lists_.meshCapacity());
     const double state = static_cast<double>(buffers_.characters().size + animationPass_.segmentBytes() +
                                              lists_.lodState().size + lists_.shadowStates().size +
                                              lists_.impostorList().size +

@@ -31,6 +31,7 @@
 #include "render/cull_pass.h"
 #include "render/draw_lists.h"
 #include "render/event_pass.h"
+#include "render/frame_ledger.h"
 #include "render/frame_view.h"
 #include "render/geometry_pool.h"
 #include "render/ground_sunlight.h"
@@ -44,6 +45,7 @@
 #include "render/shadow_cascades.h"
 #include "render/shadow_map.h"
 #include "render/shadow_raster.h"
+#include "render/terrain_buffer.h"
 #include "render/target_format.h"
 #include "skin/skinning_method.h"
 
@@ -107,6 +109,8 @@ struct RecorderOptions {
     // the buffer keeps eventCapacity records a frame.
     bool events = true;
     std::uint32_t eventCapacity = render::kDefaultEventCapacity;
+    // Room for a terrain of this many heights set after the renderer is made (the crowd's own, when more).
+    std::uint32_t terrainSamples = 0;
     // An atlas baked before for the same models in the same order (tests, benchmarks): not baked again.
     std::shared_ptr<const render::ImpostorAtlas> atlas;
     // Kept alive by what may outlive the recorder (its atlas, shared with other recorders): the
@@ -154,8 +158,9 @@ struct FrameOutput {
 
 class CrowdRecorder {
 public:
-    // The crowd must outlive the renderer. Pipelines are built for options.target.
-    CrowdRecorder(const gpu::VulkanContext& context, crowd::Crowd& crowd, const RecorderOptions& options);
+    // Laid out for `crowd` (its slots and models, which must outlive the recorder; the crowd itself
+    // need not: each frame is handed the crowd to draw). Pipelines are built for options.target.
+    CrowdRecorder(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const RecorderOptions& options);
     ~CrowdRecorder();
     CrowdRecorder(const CrowdRecorder&) = delete;
     CrowdRecorder& operator=(const CrowdRecorder&) = delete;
@@ -167,7 +172,16 @@ public:
     // The submission recordSetup went into has finished: its staging memory is freed.
     void setupCompleted();
 
-    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const render::FrameView& view);
+    // `crowd`: laid out as the one the recorder was made for (crowd::Crowd::layoutKey), else gpu::Error.
+    // Uploads what it changed since the last frame that ran (render/frame_ledger.h).
+    // `samples`: the host's device samples this frame (render/driven_pass.h), for its device-driven
+    // characters; GPU animation only.
+    void recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const render::FrameView& view, const crowd::Crowd& crowd,
+                       const render::DeviceSampleInput* samples = nullptr);
+    // The device samples' fate in the slot's last frame (read after its fence).
+    render::IngestTally ingestTally(std::uint32_t slot) const { return animationPass_.driven().tally(slot); }
+    // Frames recorded and never submitted, found so far (render/frame_ledger.h).
+    std::uint64_t framesLost() const { return ledger_.framesLost(); }
     void recordShadows(VkCommandBuffer cmd, std::uint32_t slot);
     void recordGround(VkCommandBuffer cmd, std::uint32_t slot) const;
     void recordCharacters(VkCommandBuffer cmd, std::uint32_t slot);
@@ -266,12 +280,20 @@ private:
     void useCharacterDraws(bool on);
 
     const gpu::VulkanContext& context_;
-    crowd::Crowd& crowd_;
+    // The layout of the crowds this recorder draws (crowd::Crowd::layoutKey), its slots, models and the
+    // impostors' prop sets (from the crowd it was made for).
+    std::uint64_t layoutKey_;
+    std::uint32_t slotCount_;
+    std::vector<const model::SkinnedModel*> models_;
+    std::vector<std::vector<std::uint32_t>> propSets_;
+    render::FrameLedger ledger_;
+    std::uint64_t populationVersion_ = 0;  // the crowd's population when the static ceiling last skinned
     render::TargetFormat target_;
     std::uint32_t framesInFlight_;
     render::GeometryPool pool_;
     render::CrowdBuffers buffers_;
     render::DrawLists lists_;
+    render::TerrainBuffer terrain_;
     render::CullPass cullPass_;
     render::AnimationPass animationPass_;
     std::unique_ptr<render::EventPass> eventPass_;  // with events on
@@ -309,7 +331,6 @@ private:
     bool farCrowd_;
     bool ground_;  // recordCharacters draws the ground behind the opaque characters
     bool sky_;     // and then the sky on every pixel left at the cleared depth
-    bool shadowMapReady_ = false;  // in the layout the shading samples (rendered or cleared once)
     gpu::PassObserver passes_;
     std::vector<Stage> stages_;              // per slot: how far this frame has been recorded
     std::vector<render::FrameView> views_;   // per slot: the view recordCompute was given

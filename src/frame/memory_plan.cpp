@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include "gpu/vulkan_context.h"
+#include "render/driven_pass.h"
 #include "render/ground_sunlight.h"
 #include "render/impostor_prop_sets.h"
 #include "render/mesh_raster.h"
 #include "render/shadow_raster.h"
+#include "render/terrain_buffer.h"
 #include "skin/skin_target_layout.h"
 #include "skin/skinned_capacity.h"
 
@@ -68,6 +70,10 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                            .bytes()},
                   {"clip library (GPU animation)", libraryBytes(crowd.library())},
                   {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
+                  {"driven keys and counts",
+                   render::DrivenPass::bytesFor(crowd.size(), crowd.drivenKeysPerSlot(),
+                                                static_cast<std::uint32_t>(crowd.models().size()))},
+                  {"terrain heights", std::uint64_t{render::TerrainBuffer::samplesFor(crowd, options.terrainSamples)} * 4},
                   {"culling lists and draw commands",
                    render::DrawLists::bytesFor(crowd.size(), buckets, meshCapacityInEffect(options, crowd),
                                                options.method == skin::Method::VertexShader)},

@@ -7,7 +7,9 @@
 namespace gpu {
 
 // What kind of failure, for the library's error codes (crowdgpu::ErrorCode has the same values).
-enum class ErrorKind { InvalidArgument = 1, Unsupported, OutOfDeviceMemory, OutOfHostMemory, WrongOrder, LoadFailed, Vulkan };
+enum class ErrorKind {
+    InvalidArgument = 1, Unsupported, OutOfDeviceMemory, OutOfHostMemory, WrongOrder, LoadFailed, Vulkan, CapacityExceeded
+};
 
 // A failure the user can act on (no device, out of memory, bad input): main() prints what() as
 // one line and exits non-zero.

@@ -1,9 +1,11 @@
 #include "render/animation_pass.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <span>
 
+#include "crowd/epoch.h"
 #include "gpu/barriers.h"
 #include "gpu/pipeline.h"
 #include "gpu/vulkan_context.h"
@@ -46,11 +48,12 @@ bool parseAnimationPath(const std::string& name, AnimationPath& path) {
     return false;
 }
 
-AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const CrowdBuffers& buffers,
-                             const DrawLists& lists, std::uint32_t framesInFlight)
-    : context_(context), crowd_(crowd), lists_(lists) {
+AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, CrowdBuffers& buffers,
+                             const DrawLists& lists, const TerrainBuffer& terrain, std::uint32_t framesInFlight)
+    : context_(context), buffers_(buffers), lists_(lists), terrain_(terrain) {
     try {
         const anim::ClipLibrary& library = crowd.library();
+        for (std::uint32_t m = 0; m < crowd.models().size(); ++m) modelJoints_.push_back(library.jointCount(m));
         library_.push_back(upload(context, library.models(), "animation models"));
         library_.push_back(upload(context, library.joints(), "animation joints"));
         library_.push_back(upload(context, library.clips(), "animation clips"));
@@ -63,14 +66,28 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
         const VkDeviceSize segmentBytes = characters * sizeof(gpu::MotionRecord);
         motions_ = gpu::createBuffer(context, segmentBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      gpu::MemoryUse::DeviceLocal, "motion segments");
+        // Each array starts at the storage offset alignment (a multiple of 16: the tints' vec4s stay aligned).
+        const VkDeviceSize align = std::max<VkDeviceSize>(16, context.properties.limits.minStorageBufferOffsetAlignment);
+        auto aligned = [align](VkDeviceSize bytes) { return (bytes + align - 1) / align * align; };
+        indicesOffset_ = aligned(segmentBytes);
+        tintsOffset_ = aligned(indicesOffset_ + characters * sizeof(std::uint32_t));
+        wordsOffset_ = aligned(tintsOffset_ + characters * sizeof(glm::vec4));
+        countsOffset_ = aligned(wordsOffset_ + characters * sizeof(glm::uvec2));
+        const VkDeviceSize stagingBytes = countsOffset_ + characters * sizeof(std::uint32_t);
+        driven_ = std::make_unique<DrivenPass>(context, crowd, buffers, motions_, framesInFlight);
         constexpr VkDescriptorType storageType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         for (std::uint32_t i = 0; i < framesInFlight; ++i) {
-            staging_.push_back(gpu::createBuffer(context, segmentBytes + characters * sizeof(std::uint32_t),
-                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::HostUpload,
-                                                 "motion segments (upload)"));
-            const gpu::BufferBinding scatter[] = {{storageType, staging_.back().buffer, 0, segmentBytes},
-                                                  {storageType, staging_.back().buffer, segmentBytes, VK_WHOLE_SIZE},
-                                                  {storageType, motions_.buffer}};
+            staging_.push_back(gpu::createBuffer(context, stagingBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                                 gpu::MemoryUse::HostUpload, "motion segments (upload)"));
+            const VkBuffer staged = staging_.back().buffer;
+            const gpu::BufferBinding scatter[] = {{storageType, staged, 0, segmentBytes},
+                                                  {storageType, staged, indicesOffset_, tintsOffset_ - indicesOffset_},
+                                                  {storageType, motions_.buffer},
+                                                  {storageType, staged, tintsOffset_, wordsOffset_ - tintsOffset_},
+                                                  {storageType, staged, wordsOffset_, countsOffset_ - wordsOffset_},
+                                                  {storageType, buffers.characters().buffer},
+                                                  {storageType, staged, countsOffset_, VK_WHOLE_SIZE},
+                                                  {storageType, driven_->heads().buffer}};
             scatterSets_.push_back(std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, scatter));
         }
         dispatches_ = gpu::createBuffer(context, std::max(1u, lists.bucketCount()) * sizeof(glm::uvec4),
@@ -78,9 +95,11 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
                                         gpu::MemoryUse::DeviceLocal, "palette dispatches");
 
         constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        const gpu::BufferBinding motionBindings[] = {{storage, library_[0].buffer}, {storage, library_[2].buffer},
-                                                     {storage, library_[6].buffer}, {storage, motions_.buffer},
-                                                     {storage, buffers.characters().buffer}};
+        const gpu::BufferBinding motionBindings[] = {{storage, library_[0].buffer},        {storage, library_[2].buffer},
+                                                     {storage, library_[6].buffer},        {storage, motions_.buffer},
+                                                     {storage, buffers.characters().buffer}, {storage, driven_->models().buffer},
+                                                     {storage, driven_->keys().buffer},    {storage, driven_->heads().buffer},
+                                                     {storage, driven_->owners().buffer},  {storage, terrain.heights().buffer}};
         motionSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, motionBindings);
         const gpu::BufferBinding paletteBindings[] = {
             {storage, library_[0].buffer},          {storage, library_[1].buffer},     {storage, library_[2].buffer},
@@ -128,6 +147,7 @@ void AnimationPass::release() {
     paletteSet_.reset();
     motionSet_.reset();
     scatterSets_.clear();
+    driven_.reset();
     for (gpu::Buffer& b : staging_) gpu::destroyBuffer(context_, b);
     staging_.clear();
     gpu::destroyBuffer(context_, dispatches_);
@@ -136,24 +156,44 @@ void AnimationPass::release() {
     library_.clear();
 }
 
-void AnimationPass::uploadSegments(VkCommandBuffer cmd, std::uint32_t frameSlot) {
-    if (crowd_.generation() == uploadedGeneration_) return;
-    const bool sawPrevious = uploadedGeneration_ != kNothing && crowd_.generation() == uploadedGeneration_ + 1;
-    uploadedGeneration_ = crowd_.generation();
-    const std::vector<gpu::MotionRecord>& segments = crowd_.segments();
-    const std::uint32_t characters = crowd_.size();
-    auto* staged = static_cast<gpu::MotionRecord*>(staging_[frameSlot].mapped);
-    auto* indices = reinterpret_cast<std::uint32_t*>(staged + std::max(1u, characters));
+void AnimationPass::recordSegmentUpload(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd,
+                                        std::uint64_t since) {
+    const std::vector<gpu::MotionRecord>& segments = crowd.segments();
+    std::byte* base = static_cast<std::byte*>(staging_[frameSlot].mapped);
+    auto* staged = reinterpret_cast<gpu::MotionRecord*>(base);
+    auto* indices = reinterpret_cast<std::uint32_t*>(base + indicesOffset_);
+    auto* tints = reinterpret_cast<glm::vec4*>(base + tintsOffset_);
+    auto* words = reinterpret_cast<glm::uvec2*>(base + wordsOffset_);
+    auto* keyCounts = reinterpret_cast<std::uint32_t*>(base + countsOffset_);
+    std::span<gpu::CharacterRecord> records = buffers_.mutableRecords();
+    const crowd::DrivenKeys& keys = crowd.drivenKeys();
     std::uint32_t count = 0;
-    auto stage = [&](std::uint32_t c) { staged[count] = segments[c], indices[count++] = c; };
-    if (sawPrevious) {
-        for (std::uint32_t c : crowd_.lastChanged()) stage(c);
-    } else {
-        for (std::uint32_t c = 0; c < characters; ++c) stage(c);
-    }
-    if (count == 0) return;
-    // The previous frame's motion pass must be done reading the segments the scatter overwrites.
-    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
+    auto stage = [&](std::uint32_t c) {
+        const crowd::Identity identity = crowd.identity(c);
+        const crowd::Driven driven = crowd.drivenBy(c);
+        staged[count] = segments[c];
+        indices[count] = c;
+        tints[count] = identity.tintScale;
+        words[count] = glm::uvec2(identity.props, identity.generation);
+        // Its key count: the CPU's for a host-driven character; the GPU's own for a device-driven one (and
+        // none at all in a crowd without driven keys): 0xFFFFFFFF leaves it.
+        keyCounts[count++] = driven == crowd::Driven::DeviceSamples || driven_->keysPerSlot() == 0 ? 0xFFFFFFFFu
+                             : driven == crowd::Driven::HostSamples && !keys.empty()                 ? keys.count(c)
+                                                                                                      : 0u;
+        records[c].tint = identity.tintScale;  // the CPU's copy (the CPU paths upload or cull from it)
+        records[c].pose.z = static_cast<float>(identity.props);  // below 2^MAX_PROPS: exact
+        records[c].pose.w = std::bit_cast<float>(identity.generation);
+    };
+    if (!crowd.changes().forEachSince(since, stage))
+        for (std::uint32_t c = 0; c < crowd.size(); ++c) stage(c);
+    if (count > 0) scatterSegments(cmd, frameSlot, count);
+    // The keys after the counts (a changed slot's count is set, then its new keys raise it).
+    recordKeyUpload(cmd, frameSlot, crowd, since);
+}
+
+void AnimationPass::scatterSegments(VkCommandBuffer cmd, std::uint32_t frameSlot, std::uint32_t count) {
+    // The previous frame's passes must be done reading the segments and records the scatter overwrites.
+    gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
                        kComputeWrite);
     const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
     const gpu::MotionPush push{glm::uvec4(count, 0u, 0u, 0u), glm::vec4(0.0f)};
@@ -162,22 +202,29 @@ void AnimationPass::uploadSegments(VkCommandBuffer cmd, std::uint32_t frameSlot)
     vkCmdPushConstants(cmd, scatterLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, scatter_);
     vkCmdDispatch(cmd, groupsFor(count, CULL_WORKGROUP_SIZE, maxGroups), 1, 1);
-    gpu::memoryBarrier(cmd, kComputeWrite, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
+    gpu::memoryBarrier(cmd, kComputeWrite,
+                       {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
 }
 
-void AnimationPass::recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, double time) {
-    uploadSegments(cmd, frameSlot);
-    // The previous frames' passes must be done reading the records before they are rewritten.
+void AnimationPass::recordKeyUpload(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd,
+                                    std::uint64_t since) {
+    driven_->recordUpload(cmd, frameSlot, crowd, since);
+}
+
+void AnimationPass::recordMotion(VkCommandBuffer cmd, const crowd::Crowd& crowd, double time) {    // The previous frames' passes must be done reading the records before they are rewritten.
     gpu::memoryBarrier(cmd, {kCharacterReaders, 0}, kComputeWrite);
     const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
     // The segments are relative to the crowd's epoch (crowd/epoch.h): so is the time, a small float.
-    const auto sinceEpoch = static_cast<float>(time - crowd_.epoch());
-    const gpu::MotionPush push{glm::uvec4(crowd_.size(), maxGroups, 0u, 0u), glm::vec4(sinceEpoch, 0.0f, 0.0f, 0.0f)};
+    const auto sinceEpoch = static_cast<float>(time - crowd.epoch());
+    const gpu::MotionPush push{glm::uvec4(crowd.size(), maxGroups, driven_->keysPerSlot(), 0u),
+                               glm::vec4(sinceEpoch, crowd.drivenClock(time), static_cast<float>(crowd.drivenTiming().extrapolate),
+                                         static_cast<float>(crowd.epoch() / crowd::kEpochSeconds)),
+                               terrain_.grid()};
     const VkDescriptorSet set = motionSet_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, motionLayout_, 0, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, motionLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, motion_);
-    vkCmdDispatch(cmd, groupsFor(crowd_.size(), CULL_WORKGROUP_SIZE, maxGroups), 1, 1);
+    vkCmdDispatch(cmd, groupsFor(crowd.size(), CULL_WORKGROUP_SIZE, maxGroups), 1, 1);
     gpu::memoryBarrier(cmd, kComputeWrite, {kCharacterReaders, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
 }
 
@@ -192,9 +239,8 @@ void AnimationPass::recordPalettes(VkCommandBuffer cmd) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, paletteDispatch_);
     vkCmdDispatch(cmd, 1, 1, 1);
     gpu::memoryBarrier(cmd, kComputeWrite, {VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT});
-    const anim::ClipLibrary& library = crowd_.library();
     for (std::uint32_t b = 0; b < lists_.bucketCount(); ++b) {
-        const std::uint32_t joints = library.jointCount(lists_.buckets()[b].list.x);
+        const std::uint32_t joints = modelJoints_[lists_.buckets()[b].list.x];
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, joints <= kPaletteThreads ? palette_ : paletteLarge_);
         const gpu::PalettePush push{glm::uvec4(b, joints, std::max(1u, kPaletteThreads / joints), 0u)};
         vkCmdPushConstants(cmd, paletteLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);

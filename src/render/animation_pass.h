@@ -18,6 +18,8 @@
 #include "gpu/descriptor_bundle.h"
 #include "render/crowd_buffers.h"
 #include "render/draw_lists.h"
+#include "render/driven_pass.h"
+#include "render/terrain_buffer.h"
 
 namespace gpu { class VulkanContext; }
 
@@ -31,24 +33,34 @@ bool parseAnimationPath(const std::string& name, AnimationPath& path);
 
 class AnimationPass {
 public:
-    AnimationPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const CrowdBuffers& buffers,
-                  const DrawLists& lists, std::uint32_t framesInFlight);
+    // Uploads `crowd`'s clip library; the pass then animates any crowd of the same layout
+    // (crowd::Crowd::layoutKey), handed to each frame.
+    AnimationPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, CrowdBuffers& buffers,
+                  const DrawLists& lists, const TerrainBuffer& terrain, std::uint32_t framesInFlight);
     ~AnimationPass();
     AnimationPass(const AnimationPass&) = delete;
     AnimationPass& operator=(const AnimationPass&) = delete;
 
-    // Uploads the segments the crowd changed since this pass last looked (all of them when it missed a
-    // generation), then runs the motion pass for `time`. The records are ready for culling after it.
-    void recordMotion(VkCommandBuffer cmd, std::uint32_t frameSlot, double time);
+    // Uploads the segments and identities (tint, scale, props; a free slot's scale 0) of the slots
+    // `crowd` changed after generation `since` (every slot for crowd::ChangeLog::kEverything:
+    // render/frame_ledger.h), on either animation path (the event pass reads the segments). The CPU's
+    // copy of the records (CrowdBuffers::mutableRecords) gets the identities too.
+    void recordSegmentUpload(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, std::uint64_t since);
+    // After the upload, with the host's device samples this frame: their keys (render/driven_pass.h).
+    void recordDeviceSamples(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd,
+                             const DeviceSampleInput& samples, double time) {
+        driven_->recordIngest(cmd, frameSlot, crowd, samples, time);
+    }
+    // After the upload: the motion pass for `time`. The records are ready for culling after it.
+    void recordMotion(VkCommandBuffer cmd, const crowd::Crowd& crowd, double time);
+    const DrivenPass& driven() const { return *driven_; }
+    void checkDeviceSamples(const DeviceSampleInput& samples) const { driven_->checkSamples(samples); }
     // After culling: the bones of every listed character, ready for skinning and drawing.
     void recordPalettes(VkCommandBuffer cmd);
 
     // The bones were reallocated (CrowdBuffers::setBoneBlocks): the palette pass writes the new buffer.
     void rebindBones(const CrowdBuffers& buffers);
 
-    // Uploads the segments the crowd changed since this pass last looked, without the motion pass (the
-    // event pass reads them on the CPU animation path too). recordMotion does this first.
-    void recordSegmentUpload(VkCommandBuffer cmd, std::uint32_t frameSlot) { uploadSegments(cmd, frameSlot); }
 
     // The flattened clip library's tables on the device (anim::ClipLibrary's, in its order), and each
     // character's current motion segment: what the event pass reads beside the motion pass.
@@ -61,20 +73,24 @@ public:
     std::uint64_t segmentBytes() const { return motions_.size; }
 
 private:
-    static constexpr std::uint64_t kNothing = ~0ull;
-    void uploadSegments(VkCommandBuffer cmd, std::uint32_t frameSlot);
+    void scatterSegments(VkCommandBuffer cmd, std::uint32_t frameSlot, std::uint32_t count);
+    void recordKeyUpload(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, std::uint64_t since);
     void release();
 
     const gpu::VulkanContext& context_;
-    const crowd::Crowd& crowd_;
+    CrowdBuffers& buffers_;
     const DrawLists& lists_;
+    const TerrainBuffer& terrain_;
+    std::vector<std::uint32_t> modelJoints_;  // per model of the layout
     std::vector<gpu::Buffer> library_;
     std::uint64_t libraryBytes_ = 0;
     gpu::Buffer motions_, dispatches_;
-    // Per frame in flight: replanned segments, then their characters' indices (after the segments).
+    // Per frame in flight: the changed slots' segments, their indices, their identities (tint and
+    // scale; props and generation), their key counts, each array after the one before.
     std::vector<gpu::Buffer> staging_;
+    VkDeviceSize indicesOffset_ = 0, tintsOffset_ = 0, wordsOffset_ = 0, countsOffset_ = 0;
+    std::unique_ptr<DrivenPass> driven_;
     std::vector<std::unique_ptr<gpu::DescriptorBundle>> scatterSets_;
-    std::uint64_t uploadedGeneration_ = kNothing;
     std::unique_ptr<gpu::DescriptorBundle> motionSet_, paletteSet_;
     VkPipelineLayout motionLayout_ = VK_NULL_HANDLE, paletteLayout_ = VK_NULL_HANDLE, scatterLayout_ = VK_NULL_HANDLE;
     VkPipeline motion_ = VK_NULL_HANDLE, paletteDispatch_ = VK_NULL_HANDLE, scatter_ = VK_NULL_HANDLE;

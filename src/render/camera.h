@@ -22,6 +22,7 @@ struct CrowdShape {
     glm::vec3 center{0.0f};
     float radius = 1.0f;
     float characterHeight = 1.0f;
+    float ground = 0.0f;  // the lowest the ground goes (the terrain's lowest height; 0 without terrain)
 };
 
 }  // namespace render

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
 #include <string>
 
@@ -62,13 +63,17 @@ BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& c
         layout = planBones(crowd, tight);
         layout.aligned = false;
     }
+    return withBlocks(std::move(layout), blocks, slots);
+}
+
+BoneLayout withBlocks(BoneLayout perCharacter, BoneBlocks blocks, std::uint32_t slots) {
     if (blocks == BoneBlocks::PerMeshSlot) {
         // The per-character layout's block size, so the vs baseline's pipeline and uniform range (made
         // for the largest block) stay valid across a switch between the two.
-        layout.blocks = BoneBlocks::PerMeshSlot;
-        layout.totalRows = std::uint64_t{std::max(slots, 1u)} * layout.largestBlock;
+        perCharacter.blocks = BoneBlocks::PerMeshSlot;
+        perCharacter.totalRows = std::uint64_t{std::max(slots, 1u)} * perCharacter.largestBlock;
     }
-    return layout;
+    return perCharacter;
 }
 
 std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, std::span<const std::uint32_t> boneOffsets) {
@@ -76,18 +81,23 @@ std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, st
     std::vector<std::uint32_t> ranks(crowd.models().size(), 0);
     for (std::uint32_t i = 0; i < crowd.size(); ++i) {
         const crowd::Character& c = crowd.characters()[i];
+        const crowd::Identity identity = crowd.identity(i);  // a free slot's scale 0: culling skips it
         records[i].placement = glm::vec4(c.position, c.heading);
-        records[i].tint = glm::vec4(c.tint, c.scale);
+        records[i].tint = identity.tintScale;
         records[i].ids = glm::uvec4(c.model, boneOffsets[i], ranks[c.model]++, 0u);
-        records[i].pose.z = static_cast<float>(c.props);  // below 2^MAX_PROPS: exact
-        crowd.poseRecord(i, crowd.epoch(), records[i]);  // near where it was advanced to, until a frame's pose
+        records[i].pose.z = static_cast<float>(identity.props);  // below 2^MAX_PROPS: exact
+        records[i].pose.w = std::bit_cast<float>(identity.generation);
+        if (crowd.alive(i)) crowd.poseRecord(i, crowd.epoch(), records[i]);  // near where it was advanced to
     }
     return records;
 }
 
 CrowdBuffers::CrowdBuffers(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t framesInFlight,
                            BoneBlocks blocks, std::uint32_t slots)
-    : context_(context), crowd_(crowd), slots_(slots), layout_(planBones(context, crowd, blocks, slots)) {
+    : context_(context),
+      slots_(slots),
+      perCharacter_(planBones(context, crowd, BoneBlocks::PerCharacter, slots)),
+      layout_(withBlocks(perCharacter_, blocks, slots)) {
     records_ = characterRecords(crowd, layout_.offsets);
     try {
         // Transfer source too: tests read back the records the motion pass wrote.
@@ -107,7 +117,7 @@ gpu::Buffer CrowdBuffers::allocateBones(const BoneLayout& layout) const {
     const VkDeviceSize boneBytes = layout.bytes();
     // Offsets are 32-bit BoneRows indices in the shaders; the storage range bounds what one binding sees.
     if (boneBytes > context_.properties.limits.maxStorageBufferRange || layout.totalRows > UINT32_MAX)
-        throw gpu::Error("a crowd of " + std::to_string(crowd_.size()) + " characters: bone matrices (" +
+        throw gpu::Error("a crowd of " + std::to_string(records_.size()) + " characters: bone matrices (" +
                              boneBlocksName(layout.blocks) + ") need " + gpu::formatBytes(boneBytes) +
                              ", over this device's storage-buffer limit of " +
                              gpu::formatBytes(context_.properties.limits.maxStorageBufferRange),
@@ -121,7 +131,7 @@ gpu::Buffer CrowdBuffers::allocateBones(const BoneLayout& layout) const {
 void CrowdBuffers::setBoneBlocks(BoneBlocks blocks) {
     if (blocks == layout_.blocks) return;
     // The new buffer first: if it cannot be had, nothing changes.
-    BoneLayout next = planBones(context_, crowd_, blocks, slots_);
+    BoneLayout next = withBlocks(perCharacter_, blocks, slots_);
     gpu::Buffer bones = allocateBones(next);
     gpu::destroyBuffer(context_, bones_);
     bones_ = bones;
@@ -192,7 +202,8 @@ void CrowdBuffers::recordRecordsUploadIfStale(VkCommandBuffer cmd, std::uint32_t
 
 void CrowdBuffers::updateRecords(const crowd::Crowd& crowd, double time) {
     crowd::WorkerPool::shared().parallelFor(crowd.size(), 1024, [&](std::uint32_t begin, std::uint32_t end) {
-        for (std::uint32_t i = begin; i < end; ++i) crowd.poseRecord(i, time, records_[i]);
+        for (std::uint32_t i = begin; i < end; ++i)
+            if (crowd.alive(i)) crowd.poseRecord(i, time, records_[i]);
     });
 }
 

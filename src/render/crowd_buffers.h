@@ -61,7 +61,10 @@ BoneLayout planBones(const gpu::VulkanContext& context, const crowd::Crowd& crow
 BoneLayout planBones(const VkPhysicalDeviceLimits& limits, const crowd::Crowd& crowd,
                      BoneBlocks blocks = BoneBlocks::PerCharacter, std::uint32_t slots = 0);
 
-// The GPU records of the crowd's characters.
+// A per-character layout (planBones') as `blocks` lays it out for `slots` mesh slots.
+BoneLayout withBlocks(BoneLayout perCharacter, BoneBlocks blocks, std::uint32_t slots);
+
+// The GPU records of the crowd's slots (a free slot's scale 0).
 std::vector<gpu::CharacterRecord> characterRecords(const crowd::Crowd& crowd, std::span<const std::uint32_t> boneOffsets);
 
 class CrowdBuffers {
@@ -110,8 +113,8 @@ private:
     gpu::Buffer allocateBones(const BoneLayout& layout) const;
 
     const gpu::VulkanContext& context_;
-    const crowd::Crowd& crowd_;
     std::uint32_t slots_;
+    BoneLayout perCharacter_;  // the crowd's blocks per character (a switch to them takes this layout)
     BoneLayout layout_;
     bool recordsStale_ = false;  // the device's ids.y hold slot offsets, per-character blocks need their own
     std::vector<gpu::CharacterRecord> records_;

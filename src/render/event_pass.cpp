@@ -16,6 +16,7 @@
 #include "gpu/vulkan_context.h"
 #include "render/animation_pass.h"
 #include "render/crowd_buffers.h"
+#include "render/terrain_buffer.h"
 #include "render/draw_lists.h"
 
 namespace render {
@@ -130,9 +131,12 @@ std::uint64_t EventPass::bytesFor(const crowd::Crowd& crowd, std::uint32_t capac
 }
 
 EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const AnimationPass& animation,
-                     const CrowdBuffers& buffers, const DrawLists& lists, std::uint32_t framesInFlight,
-                     std::uint32_t capacity)
-    : context_(context), crowd_(crowd), capacity_(capacity), previousCapacity_(previousCapacityFor(crowd, capacity)) {
+                     const CrowdBuffers& buffers, const DrawLists& lists, const TerrainBuffer& terrain,
+                     std::uint32_t framesInFlight, std::uint32_t capacity)
+    : context_(context),
+      terrain_(terrain),
+      capacity_(capacity),
+      previousCapacity_(previousCapacityFor(crowd, capacity)) {
     try {
         EventTables tables = eventTables(crowd);
         clipEvents_ = upload(context, std::move(tables.ranges), "event ranges");
@@ -170,7 +174,8 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
                 {storage, eventTable_.buffer},
                 {storage, previous_.back().buffer},
                 {storage, segmentStarts_.buffer},
-                {storage, events_.buffer}};
+                {storage, events_.buffer},
+                {storage, terrain.heights().buffer}};
             sets_.push_back(std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings));
         }
         const VkDescriptorSetLayout setLayout = sets_.front()->layout();
@@ -221,10 +226,11 @@ VkDeviceSize EventPass::characterBytes() const {
     return total;
 }
 
-std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSlot, double from, std::uint32_t& lost) {
+std::uint32_t EventPass::stagePrevious(std::uint32_t frameSlot, const crowd::Crowd& crowd, double from,
+                                       std::uint32_t& lost) {
     // The crowd lists whom its last advance replanned (everyone when it entered a new epoch); after
     // more than one advance since the last frame, look at everyone.
-    const std::uint64_t generation = crowd_.generation();
+    const std::uint64_t generation = crowd.generation();
     const bool seen = seenGeneration_ != kNothing;
     const bool oneAdvance = seen && generation == seenGeneration_ + 1;
     const bool noAdvance = seen && generation == seenGeneration_;
@@ -232,37 +238,47 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
     lost = 0;
     if (noAdvance) return 0;
     auto* table = static_cast<gpu::PreviousSegment*>(previous_[frameSlot].mapped);
-    auto* indices = static_cast<std::uint32_t*>(startStaging_[frameSlot].mapped);
-    auto* starts = reinterpret_cast<float*>(static_cast<std::byte*>(startStaging_[frameSlot].mapped) + startsOffset_);
-    std::uint32_t count = 0, staged = 0;
-    const double epoch = crowd_.epoch();
-    // A few changed characters: their starts and indices, scattered; everyone (or more than the
-    // scatter holds): every start in place, one copy.
-    const bool everyone = !oneAdvance || crowd_.lastChanged().size() > scatterCapacity_;
+    std::uint32_t count = 0;
+    const double epoch = crowd.epoch();
     auto consider = [&](std::uint32_t c) {
-        const crowd::Segment& current = crowd_.plans()[c];
-        if (everyone) {
-            starts[c] = static_cast<float>(current.start - epoch);
-        } else {
-            starts[staged] = static_cast<float>(current.start - epoch);
-            indices[staged++] = c;
-        }
         // Replanned after `from`: what it did before, from what the crowd still knows
         // (Crowd::knownFrom) to that start, is its previous segment.
-        const double knownFrom = crowd_.knownFrom(c);
-        if (!(current.start > from) || std::isinf(knownFrom) || !(knownFrom < current.start)) return;
+        const crowd::Segment& current = crowd.plans()[c];
+        const double knownFrom = crowd.knownFrom(c);
+        if (!crowd.alive(c) || !(current.start > from) || std::isinf(knownFrom) || !(knownFrom < current.start)) return;
         if (count == previousCapacity_) return void(++lost);
-        const std::uint32_t model = crowd_.characters()[c].model;
-        table[count++] = {crowd::recordFrom(crowd_.previousPlan(c), epoch, crowd_.library(), model),
+        const std::uint32_t model = crowd.characters()[c].model;
+        table[count++] = {crowd::recordFrom(crowd.previousPlan(c), epoch, crowd.library(), model),
                           glm::vec4(static_cast<float>(knownFrom - epoch), static_cast<float>(current.start - epoch), 0.0f, 0.0f),
                           glm::uvec4(c, 0u, 0u, 0u)};
     };
-    if (everyone) {
-        for (std::uint32_t c = 0; c < crowd_.size(); ++c) consider(c);
+    if (oneAdvance) {
+        for (std::uint32_t c : crowd.lastChanged()) consider(c);
     } else {
-        for (std::uint32_t c : crowd_.lastChanged()) consider(c);
+        for (std::uint32_t c = 0; c < crowd.size(); ++c) consider(c);
     }
-    if (!everyone && staged == 0) return count;
+    return count;
+}
+
+void EventPass::uploadStarts(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, std::uint64_t since) {
+    auto* indices = static_cast<std::uint32_t*>(startStaging_[frameSlot].mapped);
+    auto* starts = reinterpret_cast<float*>(static_cast<std::byte*>(startStaging_[frameSlot].mapped) + startsOffset_);
+    const double epoch = crowd.epoch();
+    // When a character's current segment starts: for one spawned after it, its birth (it fired nothing before).
+    auto startOf = [&](std::uint32_t c) {
+        return static_cast<float>(std::max(crowd.plans()[c].start, crowd.bornAt(c)) - epoch);
+    };
+    // A few changed characters: their starts and indices, scattered; everyone (or more than the
+    // scatter holds): every start in place, one copy.
+    std::uint32_t staged = 0;
+    const bool everyone = crowd.changes().pendingSince(since) > scatterCapacity_ ||
+                          !crowd.changes().forEachSince(since, [&](std::uint32_t c) {
+                              starts[staged] = startOf(c);
+                              indices[staged++] = c;
+                          });
+    if (everyone)
+        for (std::uint32_t c = 0; c < crowd.size(); ++c) starts[c] = startOf(c);
+    if (!everyone && staged == 0) return;
     // The last frames' event passes are done reading the starts this overwrites, and the last copy or
     // scatter is done writing them.
     constexpr gpu::Access copyWrite{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
@@ -274,7 +290,7 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
                             VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        writer);
     if (everyone) {
-        const VkBufferCopy all{startsOffset_, 0, VkDeviceSize{crowd_.size()} * sizeof(float)};
+        const VkBufferCopy all{startsOffset_, 0, VkDeviceSize{crowd.size()} * sizeof(float)};
         vkCmdCopyBuffer(cmd, startStaging_[frameSlot].buffer, segmentStarts_.buffer, 1, &all);
     } else {
         const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
@@ -286,16 +302,17 @@ std::uint32_t EventPass::stageChanges(VkCommandBuffer cmd, std::uint32_t frameSl
         vkCmdDispatch(cmd, groupsFor(staged, maxGroups), 1, 1);
     }
     gpu::memoryBarrier(cmd, writer, {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
-    return count;
 }
 
-void EventPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, double time) {
+void EventPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, std::uint64_t since,
+                       double time) {
     // The window: since the previous frame; nothing on the first frame or when time goes back.
     const double from = started_ && previousTime_ <= time ? previousTime_ : time;
     started_ = true;
     previousTime_ = time;
+    uploadStarts(cmd, frameSlot, crowd, since);
     std::uint32_t lost = 0;
-    const std::uint32_t previousCount = stageChanges(cmd, frameSlot, from, lost);
+    const std::uint32_t previousCount = stagePrevious(frameSlot, crowd, from, lost);
 
     // The host's readers of the last frame's events (any stage) and the last event pass's writes are
     // done before the header is reset.
@@ -305,7 +322,7 @@ void EventPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, double time
     vkCmdUpdateBuffer(cmd, events_.buffer, 0, sizeof header, &header);
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT}, kComputeWrite);
 
-    const double epoch = crowd_.epoch();
+    const double epoch = crowd.epoch();
     const glm::vec4 window(static_cast<float>(from - epoch), static_cast<float>(time - epoch), 0.0f, 0.0f);
     const std::uint32_t maxGroups = context_.properties.limits.maxComputeWorkGroupCount[0];
     const VkDescriptorSet set = sets_[frameSlot]->set();
@@ -313,12 +330,13 @@ void EventPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, double time
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     auto dispatch = [&](std::uint32_t items, std::uint32_t previousTable) {
         const std::uint32_t groups = groupsFor(items, maxGroups);
-        const gpu::EventPush push{glm::uvec4(items, groups * CULL_WORKGROUP_SIZE, previousTable, 0u), window};
+        const gpu::EventPush push{glm::uvec4(items, groups * CULL_WORKGROUP_SIZE, previousTable, 0u), window,
+                                  terrain_.grid()};
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
         vkCmdDispatch(cmd, groups, 1, 1);
     };
     if (from < time) {
-        dispatch(crowd_.size(), 0u);
+        dispatch(crowd.size(), 0u);
         if (previousCount > 0) {
             gpu::memoryBarrier(cmd, kComputeWrite, kComputeWrite);  // both append to the same buffer
             dispatch(previousCount, 1u);

@@ -26,6 +26,7 @@ namespace render {
 class AnimationPass;
 class CrowdBuffers;
 class DrawLists;
+class TerrainBuffer;
 
 // Records the event buffer holds unless a host asks otherwise: at 32 bytes each, 2 MiB. A frame of
 // 100,000 soldiers in view, walking with a footstep every half second per foot, fires about 6,700 at
@@ -37,7 +38,8 @@ public:
     // `capacity`: the most records a frame keeps (the rest are counted as dropped); the table of
     // previous segments holds min(crowd size, capacity, 65,536) characters replanned in a frame.
     EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const AnimationPass& animation,
-              const CrowdBuffers& buffers, const DrawLists& lists, std::uint32_t framesInFlight, std::uint32_t capacity);
+              const CrowdBuffers& buffers, const DrawLists& lists, const TerrainBuffer& terrain,
+              std::uint32_t framesInFlight, std::uint32_t capacity);
     ~EventPass();
     EventPass(const EventPass&) = delete;
     EventPass& operator=(const EventPass&) = delete;
@@ -46,7 +48,10 @@ public:
     static std::uint64_t bytesFor(const crowd::Crowd& crowd, std::uint32_t capacity, std::uint32_t framesInFlight);
     // After culling (the cull word's in-view bit) and the motion segments' upload: this frame's
     // events, for the window since the previous call (empty on the first call, and when time goes back).
-    void record(VkCommandBuffer cmd, std::uint32_t frameSlot, double time);
+    // Uploads the segment starts of the slots `crowd` changed after generation `since`
+    // (render/frame_ledger.h) first.
+    void record(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, std::uint64_t since,
+                double time);
 
     const gpu::Buffer& events() const { return events_; }
     std::uint32_t capacity() const { return capacity_; }
@@ -56,14 +61,16 @@ public:
     VkDeviceSize characterBytes() const;
 
 private:
-    // What the crowd's last advance changed, staged for this slot: the true starts of the characters'
-    // current segments (their scatter, or a copy of everyone's, into segmentStarts_ recorded), and the previous segments of those
-    // replanned inside the window. Returns how many previous segments; `lost`: those past the table.
-    std::uint32_t stageChanges(VkCommandBuffer cmd, std::uint32_t frameSlot, double from, std::uint32_t& lost);
+    // The true starts of the current segments of the slots changed after `since` (their scatter, or a
+    // copy of everyone's, into segmentStarts_ recorded).
+    void uploadStarts(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, std::uint64_t since);
+    // The previous segments of the characters the crowd's last advance replanned inside the window,
+    // staged for this slot. Returns how many; `lost`: those past the table.
+    std::uint32_t stagePrevious(std::uint32_t frameSlot, const crowd::Crowd& crowd, double from, std::uint32_t& lost);
     void release();
 
     const gpu::VulkanContext& context_;
-    const crowd::Crowd& crowd_;
+    const TerrainBuffer& terrain_;
     std::uint32_t capacity_, previousCapacity_;
     gpu::Buffer clipEvents_, eventTable_, events_;
     // Per character, when its current segment truly starts (s since the epoch, a float): a record

@@ -11,7 +11,8 @@ namespace render {
 
 std::vector<std::vector<std::uint32_t>> impostorPropSets(const crowd::Crowd& crowd) {
     std::vector<std::map<std::uint32_t, std::uint32_t>> carriers(crowd.models().size());
-    for (const crowd::Character& c : crowd.characters()) ++carriers[c.model][c.props];
+    for (std::uint32_t s = 0; s < crowd.size(); ++s)
+        if (crowd.alive(s)) ++carriers[crowd.characters()[s].model][crowd.characters()[s].props];
     std::vector<std::vector<std::uint32_t>> sets(crowd.models().size());
     for (std::size_t m = 0; m < sets.size(); ++m) {
         std::vector<std::pair<std::uint32_t, std::uint32_t>> byShare(carriers[m].begin(), carriers[m].end());

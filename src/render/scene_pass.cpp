@@ -13,27 +13,29 @@
 #include "render/geometry_pool.h"
 #include "render/ground_sunlight.h"
 #include "render/shadow_map.h"
+#include "render/terrain_buffer.h"
 
 namespace render {
 
 ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-                     const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TargetFormat& target,
-                     GroundOptions ground)
+                     const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TerrainBuffer& terrain,
+                     const TargetFormat& target, GroundOptions ground)
     : context_(context), framesInFlight_(framesInFlight) {
     constexpr VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    const VkDescriptorSetLayoutBinding bindings[6] = {
+    const VkDescriptorSetLayoutBinding bindings[7] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
         {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, MAX_TEXTURES, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both, nullptr}};
+        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both, nullptr},
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};  // the terrain's heights
     setLayout_ = gpu::createSetLayout(context, bindings);
     // One set per frame in flight seen from the camera, then one per frame and shadow cascade seen from the light.
     const std::uint32_t sets = framesInFlight * (1 + kMostShadowCascades);
     const VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets},
                                            {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets * (MAX_TEXTURES + 2)},
-                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * sets}};
+                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * sets}};
     pool_ = gpu::createDescriptorPool(context, sizes, sets);
     for (std::uint32_t i = 0; i < sets; ++i) {
         uniforms_.push_back(gpu::createBuffer(context, sizeof(gpu::SceneUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
@@ -45,6 +47,8 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         gpu::writeBufferDescriptor(context, sets_.back(), 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                    pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
         gpu::writeBufferDescriptor(context, sets_.back(), 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pool.materials().buffer, 0,
+                                   VK_WHOLE_SIZE);
+        gpu::writeBufferDescriptor(context, sets_.back(), 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, terrain.heights().buffer, 0,
                                    VK_WHOLE_SIZE);
         constexpr VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         constexpr VkImageLayout readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -104,12 +108,23 @@ void ScenePass::updateLight(std::uint32_t frameSlot, std::uint32_t cascade, cons
     std::memcpy(uniforms_[lightIndex(frameSlot, cascade)].mapped, &uniforms, sizeof uniforms);
 }
 
-void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const {
+std::uint32_t groundVertices(const gpu::TerrainGrid& grid) {
+    if (!(grid.extent.z > 0.0f)) return 6;  // one quad
+    // As ground.vert.glsl lays them out: every stride-th line of the grid, and a ring out to the edge.
+    auto inner = [](std::uint32_t samples) {
+        const std::uint32_t stride = std::max(1u, (samples - 2u) / GROUND_MOST_CELLS + 1u);
+        return (samples - 1u + stride - 1u) / stride;
+    };
+    return 6u * (inner(grid.size.x) + 2u) * (inner(grid.size.y) + 2u);
+}
+
+void ScenePass::recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push,
+                             const gpu::TerrainGrid& terrain) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundPipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, groundLayout_, 0, 1, &sets_[frameSlot], 0, nullptr);
     vkCmdPushConstants(cmd, groundLayout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push,
                        &push);
-    vkCmdDraw(cmd, 6, 1, 0, 0);
+    vkCmdDraw(cmd, groundVertices(terrain), 1, 0, 0);
 }
 
 void ScenePass::recordSky(VkCommandBuffer cmd, std::uint32_t frameSlot) const {

@@ -20,6 +20,7 @@ namespace render {
 
 class GeometryPool;
 class GroundSunlight;
+class TerrainBuffer;
 class ShadowMap;
 
 // The clear colour behind everything and the colour distant things fade into (linear RGB).
@@ -44,8 +45,8 @@ struct GroundOptions {
 class ScenePass {
 public:
     ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFlight, const GeometryPool& pool,
-              const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TargetFormat& target,
-              GroundOptions ground = {});
+              const ShadowMap& shadowMap, const GroundSunlight& groundSunlight, const TerrainBuffer& terrain,
+              const TargetFormat& target, GroundOptions ground = {});
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;
@@ -59,7 +60,9 @@ public:
     }
     void update(std::uint32_t frameSlot, const gpu::SceneUniforms& uniforms);
     void updateLight(std::uint32_t frameSlot, std::uint32_t cascade, const gpu::SceneUniforms& uniforms);
-    void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push) const;
+    // The ground as a quad at y = 0, or over `terrain` its grid (shaders/ground.vert.glsl).
+    void recordGround(VkCommandBuffer cmd, std::uint32_t frameSlot, const ScenePush& push,
+                      const gpu::TerrainGrid& terrain) const;
     // The sky colour (kSkyColor) on every pixel still at the cleared depth: after everything opaque, it
     // writes the pixels a colour clear would have, so the host need not clear its colour target. On an
     // H200's graphics slice (the H100's) a colour clear costs 0.15 ms a sample per pixel at 1080p; the

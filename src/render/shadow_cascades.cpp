@@ -20,10 +20,11 @@ struct Box {
     glm::vec3 lo{1e30f}, hi{-1e30f};
 };
 
-// The light-view box of the camera's view from distance `from` to `to`, above the ground: of the slice's
-// eight corners those above it, and where its twelve edges cross it (a convex solid cut by a plane is
-// the hull of those points; corners merely raised onto the ground would leave some of the ground out).
-Box sliceBox(const Camera& camera, float aspect, const glm::mat4& lightView, float from, float to) {
+// The light-view box of the camera's view from distance `from` to `to`, above the ground (the plane at
+// the ground's lowest, `ground`: a terrain's hills are above it): of the slice's eight corners those above
+// it, and where its twelve edges cross it (a convex solid cut by a plane is the hull of those points;
+// corners merely raised onto the ground would leave some of the ground out).
+Box sliceBox(const Camera& camera, float aspect, const glm::mat4& lightView, float from, float to, float ground) {
     glm::mat4 projection = glm::perspective(camera.verticalFov, aspect, from, to);
     projection[1][1] *= -1.0f;
     const glm::mat4 inverse = glm::inverse(projection * glm::lookAt(camera.eye, camera.target, glm::vec3(0, 1, 0)));
@@ -39,16 +40,16 @@ Box sliceBox(const Camera& camera, float aspect, const glm::mat4& lightView, flo
         box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
     };
     for (int a = 0; a < 8; ++a) {
-        if (corners[a].y >= 0.0f) hold(corners[a]);
+        if (corners[a].y >= ground) hold(corners[a]);
         for (int bit = 1; bit < 8; bit <<= 1) {  // each edge once: from the corner without the bit
             const int b = a | bit;
             if (b == a) continue;
-            const float ya = corners[a].y, yb = corners[b].y;
+            const float ya = corners[a].y - ground, yb = corners[b].y - ground;
             if ((ya < 0.0f) != (yb < 0.0f)) hold(glm::mix(corners[a], corners[b], ya / (ya - yb)));
         }
     }
     if (box.lo.x > box.hi.x) {  // the whole slice under the ground: nothing to shadow, any small box
-        for (glm::vec3 corner : corners) hold(glm::vec3(corner.x, 0.0f, corner.z));
+        for (glm::vec3 corner : corners) hold(glm::vec3(corner.x, ground, corner.z));
     }
     return box;
 }
@@ -100,7 +101,7 @@ ShadowCascades shadowCascades(const Camera& camera, float aspect, const CrowdSha
     std::array<Box, kMostShadowCascades> boxes{};
     Box all;
     for (std::uint32_t c = 0; c < cascades.count; ++c) {
-        boxes[c] = sliceBox(camera, aspect, lightView, cascades.splits[c], cascades.splits[c + 1]);
+        boxes[c] = sliceBox(camera, aspect, lightView, cascades.splits[c], cascades.splits[c + 1], crowd.ground);
         all.lo = glm::min(all.lo, boxes[c].lo), all.hi = glm::max(all.hi, boxes[c].hi);
     }
     // One depth range for all: casters stand up to a few character heights above the region, towards the

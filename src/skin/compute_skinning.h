@@ -25,6 +25,7 @@ public:
     std::vector<MemoryItem> memory() const override;
     render::SkinnedVertices skinnedVertices() const override { return skinned_->vertices(); }
     bool needsAnimation() const override { return !(once() && skinnedOnce_); }
+    void invalidateSkinning() override { skinnedOnce_ = false; }
     bool fixedLayout() const override { return once(); }
 
 private:

@@ -64,6 +64,8 @@ public:
     // False once the method no longer reads bones (the static ceiling): the frame then skips
     // animation and the bone upload.
     virtual bool needsAnimation() const { return true; }
+    // The population changed: a method that skinned every character once (static) skins them again.
+    virtual void invalidateSkinning() {}
     // True when every character has its own skinned slot at every LOD (static), instead of the
     // frame's dense layout of visible characters.
     virtual bool fixedLayout() const { return false; }

@@ -98,7 +98,8 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
             "gpu_total_ms,pass_clock,skin_vertices_per_s,"
             "cpu_animate_ms,cpu_record_ms,memory_bytes,frames,warmup,width,height,device,driver,commit,date,"
             "scene,culling,visible_lod0,visible_lod1,visible_lod2,triangles_drawn,animation,shadow_triangles,shadow_impostors,aa,"
-            "impostors,gpu_raster_ms,raster,gpu_edge_filter_ms\n";
+            "impostors,gpu_raster_ms,raster,gpu_edge_filter_ms,cpu_drive_ms,cpu_ingest_ms,p95_cpu_ingest_ms,cpu_plan_ms,"
+            "p95_cpu_plan_ms\n";
     for (const BenchResult& r : results) {
         file << r.model << ',' << r.method << ',' << r.count << ',' << r.vertices << ',' << r.triangles << ','
              << (r.ok ? "ok" : "skipped") << ',' << r.frame.medianFrameMs << ',' << r.frame.p95FrameMs << ','
@@ -112,7 +113,8 @@ void writeCsv(const std::string& path, const BenchMeta& meta, const std::vector<
              << r.frame.medianVisible[2] << ',' << r.frame.medianTriangles << ",\"" << r.frame.animation << "\","
              << r.frame.medianShadowTriangles << ',' << r.frame.medianShadowImpostors << ',' << r.frame.antiAliasing << ','
              << r.frame.medianImpostors << ',' << passMs(r, "raster") << ',' << r.frame.raster << ','
-             << passMs(r, "edge filter") << '\n';
+             << passMs(r, "edge filter") << ',' << r.frame.medianDriveMs << ',' << r.frame.medianIngestMs << ','
+             << r.frame.p95IngestMs << ',' << r.frame.medianPlanMs << ',' << r.frame.p95PlanMs << '\n';
     }
     io::writeFile(path, file.str());
 }
@@ -184,6 +186,9 @@ void writeBenchJson(const std::string& path, const BenchMeta& meta, const std::v
         row["gpu_total_ms"] = r.passes.medianGpuTotalMs;
         row["pass_clock"] = r.passes.passClock;
         row["skin_vertices_per_s"] = skinVerticesPerSecond(r);
+        row["cpu_drive_ms"] = r.frame.medianDriveMs;    // the world's driver: its own work and its calls
+        row["cpu_ingest_ms"] = r.frame.medianIngestMs;  // its calls: spawns, removals, samples handed over
+        row["p95_cpu_ingest_ms"] = r.frame.p95IngestMs;
         row["cpu_plan_ms"] = r.frame.medianPlanMs;  // Crowd::advanceTo: the living behaviours' planning
         row["p95_cpu_plan_ms"] = r.frame.p95PlanMs;
         row["cpu_animate_ms"] = r.frame.medianAnimateMs;

@@ -3,6 +3,7 @@
 #include "app/crowd_app.h"
 #include "app/crowd_renderer.h"
 #include "app/host_device.h"
+#include "app/world.h"
 
 namespace app {
 
@@ -14,7 +15,8 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     SceneOptions scene = options.scene.scene;
     scene.count = options.count;
     scene.seed = options.seed;
-    crowdgpu::Crowd crowd = buildCrowd(models, scene);
+    World world = buildWorld(&context, models, scene, crowdgpu::RendererSettings{}.framesInFlight);
+    crowdgpu::Crowd& crowd = world.crowd;
     app::RendererOptions rendererOptions;
     static_cast<crowdgpu::RendererSettings&>(rendererOptions) =
         rendererSettings(options.scene.cull, options.method, options.scene.animation, options.scene.shadows,
@@ -24,6 +26,7 @@ RunSummary runScenario(const app::HostDevice& context, const CrowdModels& models
     rendererOptions.passClock = options.passClock;
     checkCrowdFits(context, crowd, rendererOptions, options.size);
     app::CrowdRenderer renderer(context, crowd, rendererOptions);
+    renderer.setDriver(world.driver.get());
     const app::CrowdShape shape = crowdShape(crowd);
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     const std::uint32_t total = options.warmup + options.frames;

@@ -134,6 +134,12 @@ crowdgpu::Crowd buildCrowd(const CrowdModels& models, const SceneOptions& scene)
     layout.scaleVariation = living ? 0.08f : 0.0f;
     layout.tintVariation = living ? 0.12f : 0.0f;
     layout.props = scene.props;
+    // The agents' characters are theirs from the start (--agents); a crowd no one drives keeps no keys.
+    const WorldOptions::Agents agents = scene.world.agents;
+    layout.motion = agents == WorldOptions::Agents::Host     ? crowdgpu::MotionSource::HostSamples
+                    : agents == WorldOptions::Agents::Device ? crowdgpu::MotionSource::DeviceSamples
+                                                             : crowdgpu::MotionSource::Behaviour;
+    // Driven characters get their keys (the capacity's default); a crowd no one drives keeps none.
     return crowdgpu::Crowd::grid(models.models, layout, scene.behaviour);
 }
 

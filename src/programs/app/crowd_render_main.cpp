@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@
 #include "app/obj_export.h"
 #include "app/crowd_renderer.h"
 #include "app/png_writer.h"
+#include "app/replay_driver.h"
+#include "app/state_export.h"
+#include "app/world.h"
 
 namespace {
 
@@ -99,7 +103,12 @@ int run(const app::RenderOptions& options) {
         app::loadModels(options.scene.model, options.scene.seed, &notes, options.scene.assetRoot, options.scene.props);
     for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
     app::HostDevice context({options.validation, options.device, {}, false});
-    crowdgpu::Crowd crowd = app::buildCrowd(models, options.scene);
+    app::World world = app::buildWorld(&context, models, options.scene, crowdgpu::RendererSettings{}.framesInFlight);
+    for (const std::string& note : world.notes) std::printf("note: %s\n", note.c_str());
+    crowdgpu::Crowd& crowd = world.crowd;
+    std::optional<app::StateExport> states;
+    if (!options.scene.world.exportStates.empty())
+        states.emplace(options.scene.world.exportStates, crowd, options.scene.world.exportJoints);
     app::RendererOptions rendererOptions;
     static_cast<crowdgpu::RendererSettings&>(rendererOptions) =
         app::rendererSettings(options.cull, options.method, options.animation, options.shadows, options.meshCapacity,
@@ -107,14 +116,21 @@ int run(const app::RenderOptions& options) {
     rendererOptions.size = options.size;
     app::checkCrowdFits(context, crowd, rendererOptions, options.size);
     app::CrowdRenderer renderer(context, crowd, rendererOptions);
+    renderer.setDriver(world.driver.get());
     const app::CrowdShape shape = app::crowdShape(crowd);
+    const auto* replay = dynamic_cast<const app::ReplayDriver*>(world.driver.get());
     const float aspect = static_cast<float>(options.size.width) / static_cast<float>(options.size.height);
     app::RecentFrames recent(kSummarizedFrames, std::min(5u, options.frames / 4));  // warm-up left out
     for (std::uint32_t frame = 0; frame < options.frames; ++frame) {
         const double time = app::frameTime(frame, options.startSeconds);
         renderer.camera = app::cameraOnPath(options.camera, shape, aspect, time);
         renderer.renderFrame(time);
+        if (states) states->frame(crowd, time, replay);
         recent.add(renderer.takeStats());
+    }
+    if (states) {
+        states->write();
+        std::printf("  wrote %s (%zu rows)\n", options.scene.world.exportStates.c_str(), states->rows());
     }
     app::writePng(options.out, renderer.readback());
     recent.add(renderer.takeStats());
@@ -130,7 +146,7 @@ int run(const app::RenderOptions& options) {
     summary.raster = crowdgpu::rasterName(options.cull.raster);
     summary.model = app::modelNames(models);
     summary.method = crowdgpu::methodName(options.method);
-    summary.characters = crowd.size();
+    summary.characters = crowd.liveCount();
     summary.device = context.description.name;
     summary.driver = context.description.driver;
     summary.memory = renderer.memory();

@@ -68,8 +68,12 @@ void CrowdRenderer::renderFrame(double time, const PresentHooks* hooks) {
     lastFrameStart_ = start;
     frame.stats.sceneSeconds = time;
 
-    // 1. Motion: new segments for the characters whose plan ran out (the host's call, not the library's).
+    // 1. The world: who enters and leaves, and the samples of driven characters (the host's), then motion:
+    // new segments for the characters whose plan ran out (the host's call, not the library's).
+    const double driveStart = nowMs();
+    if (driver_) frame.stats.ingestMs = driver_->update(crowd_, time);
     const double planStart = nowMs();
+    frame.stats.driveMs = planStart - driveStart;
     crowd_.advanceTo(time);
     const double recordStart = nowMs();
     frame.stats.planMs = recordStart - planStart;
@@ -89,7 +93,12 @@ void CrowdRenderer::recordFrame(VkCommandBuffer cmd, std::uint32_t slot, double 
     timer_.begin(cmd, slot);
     // On the CPU path recordCompute samples every character's clips first: that is the animation time.
     const double computeStart = nowMs();
-    renderer_.recordCompute(cmd, slot, frameView(camera, target_->extent(), time));
+    // The host's own pass that writes device samples, when the world has one.
+    const crowdgpu::DeviceSamples* samples = driver_ ? driver_->recordBeforeCompute(cmd, slot, time) : nullptr;
+    if (samples)
+        renderer_.recordCompute(cmd, slot, frameView(camera, target_->extent(), time), crowd_, *samples);
+    else
+        renderer_.recordCompute(cmd, slot, frameView(camera, target_->extent(), time), crowd_);
     if (renderer_.animatesOnCpu()) frames_[slot].stats.animateMs = nowMs() - computeStart;
     renderer_.recordShadows(cmd, slot);
     const float* horizon = crowdgpu::kHorizonColor;

@@ -19,6 +19,7 @@
 #include <crowdgpu/renderer.hpp>
 
 #include "app/camera.h"
+#include "app/crowd_driver.h"
 #include "app/gpu_timer.h"
 #include "app/render_target.h"
 
@@ -33,6 +34,8 @@ struct RendererOptions : crowdgpu::RendererSettings {
 };
 
 struct FrameStats {
+    double driveMs = 0.0;    // CPU: the world's driver (its own work and its calls: app::CrowdDriver::update)
+    double ingestMs = 0.0;   // of that, its calls into the crowd (spawns, removals, samples handed over)
     double planMs = 0.0;     // CPU: planning the motion segments whose plan ran out (Crowd::advanceTo)
     double animateMs = 0.0;  // CPU path: sampling clips and computing bone matrices (0 on the GPU path)
     double recordMs = 0.0;   // CPU: culling on the CPU (--cull cpu), recording and submitting
@@ -65,6 +68,9 @@ public:
 
     // Renders the crowd at animation time `time` seconds, seen by `camera`.
     void renderFrame(double time, const PresentHooks* hooks = nullptr);
+    // What moves the crowd besides its behaviour each frame (app/crowd_driver.h; null: nothing). It must
+    // outlive the renderer's frames.
+    void setDriver(CrowdDriver* driver) { driver_ = driver; }
     // Recreates the offscreen target at a new size (waits for the GPU).
     void resize(VkExtent2D size);
     // Switches the skinning method (waits for the GPU).
@@ -112,6 +118,7 @@ private:
 
     const HostDevice& device_;
     crowdgpu::Crowd& crowd_;
+    CrowdDriver* driver_ = nullptr;
     crowdgpu::Renderer renderer_;
     std::unique_ptr<RenderTarget> target_;
     GpuTimer timer_;

@@ -1,12 +1,15 @@
 #include "app/options.h"
 
+#include <algorithm>
 #include <charconv>
+#include <functional>
 #include <cmath>
 #include <cstdio>
 
 #include "app/number_text.h"
 #include "app/scene_presets.h"
 #include "app/start_time.h"
+#include "app/terrain_hills.h"
 
 #include "app/error.h"
 
@@ -70,6 +73,24 @@ usage: crowd-render [options]
                           meshes rasterized in compute every frame (methods that skin into a buffer); 0:
                           none; auto: 64 px on frames after one that drew 4,000,000 mesh triangles
                           (default auto); --raster compute takes every mesh wholly in front of the eye
+  --terrain flat|hills    the ground: a plane at y = 0, or built-in hills (slopes to 19 degrees) under the
+                          scene that every character stands on (default flat)
+  --trajectories FILE     the crowd is a recorded (or simulated) crowd's people, replayed: each enters when
+                          its track starts, follows its samples and leaves when it ends (PeTrack text,
+                          JuPedSim SQLite, ETH/UCY obsmat or CSV, found from the content; docs/host-driven.md)
+  --trajectory-format F   auto, petrack, jupedsim, obsmat or csv (default auto)
+  --trajectory-fps N      the recording's frames per second when the file does not say it
+  --trajectory-units U    m, cm or mm when the file does not say it
+  --trajectory-copies N   N copies of the recording side by side, shifted in time (default 1)
+  --trajectory-smoothing S  seconds over which a track's head sway is smoothed out (default 0.6; 0 off)
+  --drive-delay S         driven characters are drawn S seconds behind their samples (default 0.1)
+  --export-states FILE.csv  every frame's living characters: id (the file's, for a replay), time, root
+                          x y z, heading, clip, playback rate
+  --export-joints LIST    and these joints' world positions (NAME,...; with --export-states)
+  --churn PERCENT         that share of the crowd leaves and as many enter every frame (a live population)
+  --agents none|host|device
+                          the crowd's characters are agents of a simulation on the CPU, handed over in arrays
+                          (Crowd::drive), or on the GPU, a pass writing device samples, a sample a frame
   --start SECONDS         scene time of the first frame: where on the camera path, in the clips and in
                           the behaviours the run begins (default 0, at most 1e9; as exact and as quick
                           to reach at 1e9 as at 0)
@@ -198,6 +219,39 @@ void applyPreset(const ScenePreset& preset, RenderOptions& options) {
     options.scene.depthRatio = preset.depthRatio;
 }
 
+// The host's world's flags (WorldOptions); false for another flag.
+bool parseWorldFlag(const std::string& flag, const std::function<std::string()>& next, WorldOptions& world) {
+    if (flag == "--terrain") world.hills = parseTerrain(flag, next());
+    else if (flag == "--trajectories") world.trajectories = next();
+    else if (flag == replay::kFormatFlag) world.read.format = replay::parseTrajectoryFormat(next());
+    else if (flag == replay::kFpsFlag) world.read.fps = replay::parseTrajectoryFps(next());
+    else if (flag == replay::kUnitsFlag) world.read.units = replay::parseTrajectoryUnits(next());
+    else if (flag == replay::kCopiesFlag) world.copies = replay::parseTrajectoryCopies(next());
+    else if (flag == replay::kSmoothingFlag) world.smoothing = replay::parseTrajectorySmoothing(next());
+    else if (flag == "--drive-delay") world.delay = parseNumber(flag, next(), 0.0f, 10.0f);
+    else if (flag == "--churn") world.churn = parseNumber(flag, next(), 0.0f, 100.0f) / 100.0;
+    else if (flag == "--agents") {
+        const std::string value = next();
+        if (value == "host") world.agents = WorldOptions::Agents::Host;
+        else if (value == "device") world.agents = WorldOptions::Agents::Device;
+        else if (value == "none") world.agents = WorldOptions::Agents::None;
+        else throw app::Error("--agents: '" + value + "' is not none, host or device");
+    }
+    else if (flag == "--export-states") world.exportStates = next();
+    else if (flag == "--export-joints") {
+        world.exportJoints.clear();
+        const std::string list = next();
+        for (std::size_t start = 0; start <= list.size();) {
+            const std::size_t comma = std::min(list.find(',', start), list.size());
+            if (comma == start) throw app::Error("--export-joints: an empty joint name in '" + list + "'");
+            world.exportJoints.push_back(list.substr(start, comma - start));
+            start = comma + 1;
+        }
+    }
+    else return false;
+    return true;
+}
+
 // --scene first, wherever it stands, so that every other flag overrides the preset.
 std::string sceneName(const std::vector<std::string>& args) {
     std::string name = "default";
@@ -285,6 +339,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
             if (!app::parseAnimation(name, options.animation))
                 throw app::Error("--animation: '" + name + "' is not cpu or gpu");
         }
+        else if (parseWorldFlag(flag, next, options.scene.world)) {}
         else if (flag == "--count") options.scene.count = parseCount(flag, next(), 1, kMaxCharacters);
         else if (flag == "--clip") options.scene.clip = next();
         else if (flag == "--seed") options.scene.seed = parseCount(flag, next(), 0, UINT32_MAX);
@@ -304,6 +359,13 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, const Ext
         // --validation=no must not turn validation on.
         if (hasInlineValue && !valueTaken) throw app::Error(flag + " takes no value (got '" + flag + "=" + value + "')");
     }
+    const WorldOptions& world = options.scene.world;
+    if (!world.exportJoints.empty() && world.exportStates.empty())
+        throw app::Error("--export-joints needs --export-states (the joints are columns of its CSV)");
+    if (!world.trajectories.empty() && world.agents != WorldOptions::Agents::None)
+        throw app::Error("--agents: the crowd is the recording's people (--trajectories); give one or the other");
+    if (world.churn > 0.0 && (!world.trajectories.empty() || world.agents != WorldOptions::Agents::None))
+        throw app::Error("--churn: a replay's and the agents' populations are their own; give --churn alone");
     // Checked once every flag is known: --lod-thresholds may come after it. Only when impostors are on or
     // their threshold was given: otherwise the default threshold would refuse valid --lod-thresholds 20,10.
     if ((options.cull.impostors || impostorThresholdGiven) && !(options.cull.impostorThreshold < options.cull.lodThresholds[1]))

@@ -13,6 +13,8 @@
 #include "app/anti_aliasing.h"
 #include "app/camera_path.h"
 #include "app/names.h"
+#include "replay/path_smoothing.h"
+#include "replay/trajectory_options.h"
 
 namespace app {
 
@@ -42,6 +44,23 @@ struct CullOptions {
     float meshRasterLimit = crowdgpu::RendererSettings{}.meshRasterLimit;
 };
 
+// The host's world (docs/host-driven.md): the ground, a recorded crowd replayed by characters, and the
+// benchmarks' populations that come and go and their agents driven from the host's memory or a device buffer.
+struct WorldOptions {
+    bool hills = false;         // --terrain hills: a built-in hilly ground under the scene (app/terrain_hills.h)
+    std::string trajectories;   // --trajectories FILE: the crowd is the file's people, replayed (app/replay_driver.h)
+    replay::ReadOptions read;   // --trajectory-format, --trajectory-fps, --trajectory-units
+    std::uint32_t copies = 1;   // --trajectory-copies N: copies side by side, shifted in time
+    double smoothing = replay::kDefaultSmoothingWindow;  // --trajectory-smoothing SECONDS (0: the raw samples)
+    double delay = 0.1;         // --drive-delay SECONDS: driven characters are drawn this far behind their samples
+    double churn = 0.0;         // --churn PERCENT: that share of the crowd leaves and as many enter every frame
+    // --agents host|device: the crowd's characters driven by a simulation of agents on the CPU (samples in
+    // arrays, Crowd::drive) or on the GPU (a pass of the host's writing device samples), a sample a frame.
+    enum class Agents { None, Host, Device } agents = Agents::None;
+    std::string exportStates;                // --export-states FILE.csv: every frame's living characters
+    std::vector<std::string> exportJoints;   // --export-joints NAME,...: and these joints' world positions
+};
+
 // What a crowd is: models, size, clip, seed.
 struct SceneOptions {
     std::string scene = "default";  // the preset the other values started from (app/scene_presets.h)
@@ -54,6 +73,7 @@ struct SceneOptions {
     crowdgpu::Behaviour behaviour = crowdgpu::Behaviour::InPlace;  // what the characters do (crowdgpu/crowd.hpp)
     float depthRatio = 1.0f;        // the grid's rows over columns (a scene's; crowdgpu::GridLayout)
     bool props = true;              // --props: characters carry their models' props (docs/props.md)
+    WorldOptions world;             // the host's world: terrain, recordings, populations that change, agents
 };
 
 struct RenderOptions {

@@ -26,13 +26,15 @@ RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t wa
     summary.frames = static_cast<std::uint32_t>(stats.size());
     // Never leave every frame out: a short run still reports its last frames.
     const std::size_t first = std::min<std::size_t>(warmup, stats.size() > 1 ? stats.size() - 1 : 0);
-    std::vector<double> intervals, plan, animate, record, total, triangles, skinned, impostors, demoted;
+    std::vector<double> intervals, drive, ingest, plan, animate, record, total, triangles, skinned, impostors, demoted;
     std::vector<double> shadowTriangles, shadowImpostors;
     std::vector<double> visible[app::kLodCount], casters[app::kLodCount];
     std::map<std::string, std::vector<double>> passes;
     for (std::size_t i = first; i < stats.size(); ++i) {
         const app::FrameStats& frame = stats[i];
         if (frame.intervalMs > 0.0) intervals.push_back(frame.intervalMs);
+        drive.push_back(frame.driveMs);
+        ingest.push_back(frame.ingestMs);
         plan.push_back(frame.planMs);
         animate.push_back(frame.animateMs);
         record.push_back(frame.recordMs);
@@ -61,11 +63,14 @@ RunSummary summarize(const std::vector<app::FrameStats>& stats, std::uint32_t wa
     if (intervals.empty() && !total.empty()) {
         // One frame: no interval between frame starts to measure. Its own time is what it cost.
         summary.frameClock = "one frame: CPU plan + animate + record + GPU passes";
-        intervals.push_back(plan.back() + animate.back() + record.back() + total.back());
+        intervals.push_back(drive.back() + plan.back() + animate.back() + record.back() + total.back());
     }
     summary.medianFrameMs = median(intervals);
     summary.p95FrameMs = percentile(intervals, 0.95);
     summary.fps = summary.medianFrameMs > 0.0 ? 1000.0 / summary.medianFrameMs : 0.0;
+    summary.medianDriveMs = median(drive);
+    summary.medianIngestMs = median(ingest);
+    summary.p95IngestMs = percentile(ingest, 0.95);
     summary.medianPlanMs = median(plan);
     summary.p95PlanMs = percentile(plan, 0.95);
     summary.medianAnimateMs = median(animate);
@@ -129,7 +134,8 @@ void printSummary(const RunSummary& s) {
     }
     std::printf("  frame: median %.3f ms (%.1f fps), p95 %.3f ms  [%s]\n", s.medianFrameMs, s.fps, s.p95FrameMs,
                 s.frameClock.c_str());
-    std::printf("  cpu:   plan %.3f ms, animate %.3f ms, record+submit %.3f ms  [%s]\n", s.medianPlanMs, s.medianAnimateMs,
+    std::printf("  cpu:   drive %.3f ms (ingest %.3f, p95 %.3f), plan %.3f ms, animate %.3f ms, record+submit %.3f ms  [%s]\n",
+                s.medianDriveMs, s.medianIngestMs, s.p95IngestMs, s.medianPlanMs, s.medianAnimateMs,
                 s.medianRecordMs, s.animation.c_str());
     std::printf("  gpu:  ");
     for (const auto& [pass, ms] : s.medianGpuMs) std::printf(" %s %.3f ms,", pass.c_str(), ms);
@@ -161,6 +167,9 @@ void writeJson(const std::string& path, const RunSummary& s) {
     json["median_frame_ms"] = s.medianFrameMs;
     json["p95_frame_ms"] = s.p95FrameMs;
     json["frame_clock"] = s.frameClock;
+    json["median_cpu_drive_ms"] = s.medianDriveMs;
+    json["median_cpu_ingest_ms"] = s.medianIngestMs;
+    json["p95_cpu_ingest_ms"] = s.p95IngestMs;
     json["median_cpu_plan_ms"] = s.medianPlanMs;
     json["p95_cpu_plan_ms"] = s.p95PlanMs;
     json["median_cpu_animate_ms"] = s.medianAnimateMs;

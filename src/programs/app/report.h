@@ -39,6 +39,9 @@ struct RunSummary {
     // measured frame (no interval to measure), that frame's CPU time plus its GPU passes.
     std::string frameClock = "wall clock between frame starts";
     double fps = 0.0;             // 1000 / medianFrameMs
+    double medianDriveMs = 0.0;   // CPU: the world's driver (its own work: a replay, a simulation; and its calls)
+    double medianIngestMs = 0.0;  // of that, its calls into the crowd (spawns, removals, samples handed over)
+    double p95IngestMs = 0.0;
     double medianPlanMs = 0.0;    // CPU: motion planning (segments whose plan ran out)
     double p95PlanMs = 0.0;       // and its 95th percentile: a planning hitch shows here
     double medianAnimateMs = 0.0; // CPU

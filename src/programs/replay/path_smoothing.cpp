@@ -28,13 +28,19 @@ Sample smoothedAt(const std::vector<Sample>& raw, std::size_t i, double sigma, d
     return Sample{t, x / sum, z / sum};
 }
 
-void smoothTrack(Track& track, double sigma, double cut, SmoothingReport& report) {
+void smoothTrack(Track& track, double sigma, double cut, double maxShift, SmoothingReport& report) {
     const std::vector<Sample> raw = track.samples;
     const double first = raw.front().time, last = raw.back().time;
     for (std::size_t i = 0; i < raw.size(); ++i) {
         const double reach = std::min({cut, raw[i].time - first, last - raw[i].time});
         track.samples[i] = smoothedAt(raw, i, sigma, reach);
-        const double deviation = std::hypot(track.samples[i].x - raw[i].x, track.samples[i].z - raw[i].z);
+        double deviation = std::hypot(track.samples[i].x - raw[i].x, track.samples[i].z - raw[i].z);
+        if (deviation > maxShift) {  // a sharp turn cut: back towards the recording, maxShift from it
+            const double keep = maxShift / deviation;
+            track.samples[i].x = raw[i].x + (track.samples[i].x - raw[i].x) * keep;
+            track.samples[i].z = raw[i].z + (track.samples[i].z - raw[i].z) * keep;
+            deviation = maxShift;
+        }
         report.meanDeviation += deviation;
         if (deviation > report.maxDeviation) {
             report.maxDeviation = deviation;
@@ -47,14 +53,14 @@ void smoothTrack(Track& track, double sigma, double cut, SmoothingReport& report
 
 }  // namespace
 
-SmoothingReport smoothPaths(Recording& recording, double window) {
+SmoothingReport smoothPaths(Recording& recording, double window, double maxShift) {
     SmoothingReport report;
     report.window = window;
     if (!(window > 0.0)) return report;
     // A moving average over `window` has this standard deviation; the Gaussian has no side lobes
     // that would let a step's sway through at some frequencies, as a box does.
     const double sigma = window / std::sqrt(12.0);
-    for (Track& track : recording.tracks) smoothTrack(track, sigma, 3.0 * sigma, report);
+    for (Track& track : recording.tracks) smoothTrack(track, sigma, 3.0 * sigma, maxShift, report);
     if (report.samples > 0) report.meanDeviation /= static_cast<double>(report.samples);
     summarize(recording);
     return report;

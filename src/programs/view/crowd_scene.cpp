@@ -27,33 +27,36 @@ app::RendererOptions CrowdScene::rendererOptions(crowdgpu::Method method, VkExte
 void CrowdScene::rebuild(app::SceneOptions scene, VkExtent2D size) {
     std::vector<std::string> notes;
     app::CrowdModels models = app::loadModels(scene.model, scene.seed, &notes, scene.assetRoot, scene.props);
+    const std::uint32_t frames = crowdgpu::RendererSettings{}.framesInFlight;
     auto next = [&] {
         try {
-            return std::make_unique<crowdgpu::Crowd>(app::buildCrowd(models, scene));
+            return std::make_unique<app::World>(app::buildWorld(&context_, models, scene, frames));
         } catch (const app::Error&) {
             // A clip named for one model (--clip idle) need not exist in the next one picked in the panel.
-            if (scene.clip.empty() || scene.clip == "random" || !crowd_) throw;
+            if (scene.clip.empty() || scene.clip == "random" || !world_) throw;
             notes.push_back(models.models.front().name() + " has no clip '" + scene.clip + "'; playing its default clip");
             scene.clip.clear();
-            return std::make_unique<crowdgpu::Crowd>(app::buildCrowd(models, scene));
+            return std::make_unique<app::World>(app::buildWorld(&context_, models, scene, frames));
         }
     }();
+    notes.insert(notes.end(), next->notes.begin(), next->notes.end());
     // The panel may have changed culling, LOD or impostors since the last build: keep what it shows.
     if (renderer_) cull_ = cullOf(renderer_->settings());
-    app::checkCrowdFits(context_, *next, rendererOptions(method_, size), size);
+    app::checkCrowdFits(context_, next->crowd, rendererOptions(method_, size), size);
     // Release the current crowd (renderer first: it refers to the crowd) before allocating the next,
     // so both never need to fit at once.
     renderer_.reset();
-    crowd_ = std::move(next);
+    world_ = std::move(next);
     models_ = std::move(models);
-    renderer_ = std::make_unique<app::CrowdRenderer>(context_, *crowd_, rendererOptions(method_, size));
+    renderer_ = std::make_unique<app::CrowdRenderer>(context_, world_->crowd, rendererOptions(method_, size));
+    renderer_->setDriver(world_->driver.get());
     scene_ = scene;
     notes_.insert(notes_.end(), notes.begin(), notes.end());
 }
 
 void CrowdScene::setMethod(crowdgpu::Method method, VkExtent2D size) {
     cull_ = cullOf(renderer_->settings());
-    app::checkCrowdFits(context_, *crowd_, rendererOptions(method, size), size);
+    app::checkCrowdFits(context_, world_->crowd, rendererOptions(method, size), size);
     renderer_->setMethod(method);
     method_ = method;
 }
@@ -62,7 +65,7 @@ void CrowdScene::setAnimation(crowdgpu::Animation path, VkExtent2D size) {
     const crowdgpu::Animation previous = animation_;
     animation_ = path;
     try {
-        app::checkCrowdFits(context_, *crowd_, rendererOptions(method_, size), size);
+        app::checkCrowdFits(context_, world_->crowd, rendererOptions(method_, size), size);
         renderer_->setAnimation(path);
     } catch (...) {
         animation_ = previous;
@@ -75,12 +78,12 @@ std::uint32_t CrowdScene::maxCharacters(VkExtent2D size) const {
     // so the limit errs low) against the device's memory. A rebuild still checks the real size.
     app::RendererOptions options = rendererOptions(method_, size);
     static_cast<crowdgpu::RendererSettings&>(options) = renderer_->settings();
-    const double perCharacter = static_cast<double>(app::estimateCrowdBytes(context_, *crowd_, options, size)) /
-                                static_cast<double>(std::max(crowd_->size(), 1u));
+    const double perCharacter = static_cast<double>(app::estimateCrowdBytes(context_, world_->crowd, options, size)) /
+                                static_cast<double>(std::max(world_->crowd.size(), 1u));
     const double memoryLimit = static_cast<double>(context_.deviceLocalBytes()) / std::max(perCharacter, 1.0);
     // Nor may a buffer bound whole as a storage buffer outgrow the device's range (lavapipe: 128 MiB).
     const double rangeLimit =
-        static_cast<double>(crowdgpu::checkDeviceLimits(context_.physicalDevice, *crowd_, options).mostCharacters);
+        static_cast<double>(crowdgpu::checkDeviceLimits(context_.physicalDevice, world_->crowd, options).mostCharacters);
     return static_cast<std::uint32_t>(std::clamp(std::min(memoryLimit, rangeLimit), 1.0, static_cast<double>(app::kMaxCharacters)));
 }
 

@@ -12,6 +12,7 @@
 #include "app/crowd_app.h"
 #include "app/options.h"
 #include "app/crowd_renderer.h"
+#include "app/world.h"
 
 namespace app { class HostDevice; }
 
@@ -41,7 +42,9 @@ public:
 
     app::CrowdRenderer& renderer() { return *renderer_; }
     const app::CrowdRenderer& renderer() const { return *renderer_; }
-    const crowdgpu::Crowd& crowd() const { return *crowd_; }
+    const crowdgpu::Crowd& crowd() const { return world_->crowd; }
+    // A replayed recording's duration (--trajectories), seconds; 0 without one.
+    double recordingDuration() const { return world_->recording ? world_->recording->info.duration() : 0.0; }
     // The crowd's first model (the only one unless --model lists several).
     const crowdgpu::Model& model() const { return models_.models.front(); }
     const app::SceneOptions& options() const { return scene_; }
@@ -64,7 +67,7 @@ private:
     app::AntiAliasing antiAliasing_;
     crowdgpu::Animation animation_ = crowdgpu::Animation::Gpu;
     app::CrowdModels models_;
-    std::unique_ptr<crowdgpu::Crowd> crowd_;
+    std::unique_ptr<app::World> world_;  // the crowd, its ground and what drives it (app/world.h)
     std::unique_ptr<app::CrowdRenderer> renderer_;
     std::vector<std::string> notes_;
 };

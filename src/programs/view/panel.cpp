@@ -110,6 +110,11 @@ void Panel::drawAnimation(const PanelState& state, PanelRequests& requests) {
     if (ImGui::SliderFloat("speed", &speed, 0.0f, 4.0f, "%.2fx")) requests.speed = speed;
     bool paused = state.paused;
     if (ImGui::Checkbox("paused (Space)", &paused)) requests.paused = paused;
+    if (state.duration > 0.0) {  // a replayed recording: its time, to scrub back and forth
+        float time = static_cast<float>(state.time);
+        if (ImGui::SliderFloat("recording", &time, 0.0f, static_cast<float>(state.duration), "%.1f s"))
+            requests.seek = time;
+    }
 }
 
 void Panel::drawCulling(const PanelState& state, PanelRequests& requests) {

@@ -31,6 +31,8 @@ struct PanelState {
     std::vector<std::string> models;  // choices: built-in models, plus the --model file if any
     float speed = 1.0f;
     bool paused = false;
+    double time = 0.0;      // the scene's time
+    double duration = 0.0;  // a replayed recording's (--trajectories; 0: none): the time slider's range
     CameraMode cameraMode = CameraMode::Orbit;
     std::optional<std::uint32_t> followed;
     std::string message;  // the last note or refusal ("compute needs 90 GiB ...")
@@ -42,6 +44,7 @@ struct PanelRequests {
     std::optional<std::string> model;
     std::optional<float> speed;
     std::optional<bool> paused;
+    std::optional<double> seek;  // the recording's time slider moved: the scene's time from now
     std::optional<CameraMode> cameraMode;
     std::optional<std::optional<std::uint32_t>> follow;  // a character, or nullopt inside: stop following
     std::optional<app::CullOptions> cull;  // LOD or culling switched

@@ -85,6 +85,7 @@ int Viewer::run() {
         buildUi();
         handleKeys(window_.takeKeyPresses());
         apply(requests_);
+        if (requests_.seek) animationTime = *requests_.seek - options_.render.startSeconds;  // the recording's slider
         const bool mouseFree = !ui_ || !ui_->wantsMouse();
         const bool keysFree = !ui_ || !ui_->wantsKeyboard();
         camera_.update(input_.read(window_.handle(), window_.takeWheel(), mouseFree, keysFree, seconds));
@@ -95,6 +96,7 @@ int Viewer::run() {
         if (!controls_.paused) animationTime += seconds * controls_.speed;
         const double time = options_.scripted ? app::frameTime(frame, options_.render.startSeconds)
                                              : options_.render.startSeconds + animationTime;
+        sceneTime_ = time;
         if (controls_.scenePath) {
             // The scene's camera path, as crowd-render flies it (frame N of a script is its frame N).
             const VkExtent2D extent = swapchain_.extent();
@@ -341,6 +343,8 @@ PanelState Viewer::panelState() const {
     state.models = modelChoices(options_.render.scene.model);
     state.speed = controls_.speed;
     state.paused = controls_.paused;
+    state.time = sceneTime_;
+    state.duration = scene_.recordingDuration();
     state.cameraMode = camera_.mode();
     state.followed = controls_.followed;
     state.message = message_;

@@ -70,6 +70,7 @@ private:
     FrameHistory history_;
     Controls controls_;
     PanelRequests requests_;  // this frame's, from the panel and the keys
+    double sceneTime_ = 0.0;  // the time of the frame drawn last (the panel's recording slider)
     std::uint32_t maxCharacters_ = 1;
     bool swapchainStale_ = false;
     std::string message_;
