@@ -100,7 +100,10 @@ crowdgpu_result crowdgpu_crowd_spawn(crowdgpu_crowd crowd, const crowdgpu_charac
 crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, double at);
 crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, double at, float fade);
 /* Plans every character up to `time` seconds: once per frame, before recording. Scene times are
- * doubles: a crowd is as exact at 1e9 s as at 0 s. */
+ * doubles: a crowd is as exact at 1e9 s as at 0 s. Every call refuses a time that is not finite or lies
+ * outside +-1e10 s (crowdgpu::kLargestTime), and any NaN, infinite or out-of-range position, speed,
+ * phase, heading, scale, tint, rate, fade or enum value, with CROWDGPU_ERROR_INVALID_ARGUMENT naming it
+ * (docs/embedding.md, "Argument ranges"). */
 crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time);
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
 /* The CPU threads the library's parallel work shares, the calling thread's included (0: one per core,

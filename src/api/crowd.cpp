@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "api/api_data.h"
+#include "api/crowd_arguments.h"
 #include "crowd/host_memory.h"
 #include "crowd/worker_pool.h"
 
@@ -37,6 +38,7 @@ crowd::Character toInternal(const Character& c) {
 }
 
 crowd::BehaviourSettings behaviourOf(Behaviour behaviour, std::uint32_t seed) {
+    detail::checkBehaviour("Crowd", behaviour);
     crowd::BehaviourSettings settings;
     settings.kind = behaviour == Behaviour::March ? crowd::Behaviour::March
                     : behaviour == Behaviour::Mill ? crowd::Behaviour::Mill
@@ -62,15 +64,15 @@ Crowd::Crowd(std::unique_ptr<detail::CrowdData> data) : data_(std::move(data)) {
 Crowd::Crowd(std::vector<Model> models, std::vector<Character> characters, Behaviour behaviour, std::uint32_t seed) {
     std::vector<crowd::Character> internal;
     internal.reserve(characters.size());
+    for (std::size_t i = 0; i < characters.size(); ++i)
+        detail::checkCharacter("Crowd", "character " + std::to_string(i), characters[i]);
     for (const Character& c : characters) internal.push_back(toInternal(c));
     data_ = makeData(std::move(models), std::move(internal), behaviour, seed);
 }
 
 Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour behaviour) {
-    if (layout.count == 0) throw Error(ErrorCode::InvalidArgument, "a grid of 0 characters");
-    if (!(layout.depthRatio > 0.0f) || !std::isfinite(layout.depthRatio))
-        throw Error(ErrorCode::InvalidArgument, "a grid's depthRatio must be a positive number, not " +
-                                                    std::to_string(layout.depthRatio));
+    detail::checkGridLayout(layout);
+    detail::checkBehaviour("Crowd::grid", behaviour);
     crowd::LayoutOptions options;
     options.count = layout.count;
     options.seed = layout.seed;
@@ -96,22 +98,27 @@ std::uint32_t Crowd::size() const { return data_->crowd().size(); }
 const std::vector<Model>& Crowd::models() const { return data_->models; }
 
 std::uint32_t Crowd::spawn(const Character& character) {
+    detail::checkCharacter("spawn", "the character", character);
     return detail::translated([&] { return data_->crowd().spawn(toInternal(character)); });
 }
 
 void Crowd::moveTo(std::uint32_t character, float x, float z, double at, std::int32_t gait, float rate) {
+    detail::checkMoveTo(x, z, at, rate);
     detail::translated([&] { data_->crowd().moveTo(character, glm::vec2(x, z), at, gait, rate); });
 }
 
 void Crowd::play(std::uint32_t character, std::int32_t clip, double at, float fade, float rate) {
+    detail::checkPlay(at, fade, rate);
     detail::translated([&] { data_->crowd().play(character, clip, at, fade, rate); });
 }
 
 void Crowd::advanceTo(double time) {
+    detail::checkTime("advanceTo", "time", time);
     detail::translated([&] { data_->crowd().advanceTo(time); });
 }
 
 CharacterState Crowd::stateAt(std::uint32_t character, double time) const {
+    detail::checkTime("stateAt", "time", time);
     if (character >= size())
         throw Error(ErrorCode::InvalidArgument, "no character " + std::to_string(character) + " in a crowd of " +
                                                     std::to_string(size()));
@@ -126,6 +133,7 @@ std::uint64_t Crowd::paletteJoints() const {
 }
 
 void Crowd::computePalettes(double time, std::vector<float>& rows, bool allCores) const {
+    detail::checkTime("computePalettes", "time", time);
     detail::translated([&] {
         const crowd::Crowd& crowd = data_->crowd();
         std::vector<std::uint32_t> offsets(crowd.size());
@@ -141,6 +149,7 @@ void Crowd::computePalettes(double time, std::vector<float>& rows, bool allCores
 }
 
 void Crowd::jointWorld(std::uint32_t character, std::uint32_t joint, double time, float out[12]) const {
+    detail::checkTime("jointWorld", "time", time);
     detail::translated([&] {
         const gpu::BoneRows rows = data_->crowd().jointWorld(character, joint, time);
         static_assert(sizeof(gpu::BoneRows) == 12 * sizeof(float));
@@ -150,9 +159,8 @@ void Crowd::jointWorld(std::uint32_t character, std::uint32_t joint, double time
 
 void Crowd::events(const std::uint32_t* characters, std::size_t count, double from, double to,
                    std::vector<Event>& out) const {
+    detail::checkEventWindow(characters, count, from, to);
     detail::translated([&] {
-        if (count > 0 && characters == nullptr) throw Error(ErrorCode::InvalidArgument, "events: no character list");
-        if (!(to >= from)) throw Error(ErrorCode::InvalidArgument, "events: the window ends before it starts");
         thread_local std::vector<crowd::FiredEvent> fired;
         fired.clear();
         data_->crowd().events({characters, count}, from, to, fired);
