@@ -154,6 +154,11 @@ public:
     // several threads at once (it changes nothing).
     void events(const std::uint32_t* characters, std::size_t count, double from, double to,
                 std::vector<Event>& out) const;
+    // The same window with a limit: returns how many events fire and lists them in `out` only when
+    // they are at most `capacity` (else `out` is left empty), so the memory a call takes is bounded
+    // by the caller. Capacity 0: the count alone, with no storage at all.
+    std::uint64_t events(const std::uint32_t* characters, std::size_t count, double from, double to,
+                         std::vector<Event>& out, std::size_t capacity) const;
 
     // The ground the crowd stands on: centre (x, y, z) and radius in metres; its tallest model's height.
     void bounds(float center[3], float& radius, float& tallest) const;

@@ -125,9 +125,10 @@ typedef struct crowdgpu_event {
  * by character in the order given, each in time order; exact, the same split over any frames). Sets
  * *count to how many fired and writes them to out[0 .. *count) when they fit in `capacity`; when
  * they do not, writes none and returns CROWDGPU_ERROR_INVALID_ARGUMENT (call again with room for
- * *count; capacity 0 and out NULL asks for the count alone). A character that does not exist or a
- * window before what the crowd still knows is CROWDGPU_ERROR_INVALID_ARGUMENT. About 100 ns a
- * character for a frame's window. */
+ * *count; capacity 0 and out NULL asks for the count alone, which stores no event). A character that
+ * does not exist, a window before what the crowd still knows or longer than 3,600 s
+ * (crowdgpu::kLargestEventWindow) is CROWDGPU_ERROR_INVALID_ARGUMENT. About 100 ns a character for a
+ * frame's window; memory: at most `capacity` events, none kept after the call past 1.5 MiB. */
 crowdgpu_result crowdgpu_crowd_events(crowdgpu_crowd crowd, const uint32_t* characters, uint32_t character_count,
                                       double from, double to, crowdgpu_event* out, uint32_t capacity, uint32_t* count);
 void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest);

@@ -238,19 +238,23 @@ crowdgpu_result crowdgpu_crowd_events(crowdgpu_crowd crowd, const uint32_t* char
                                       double from, double to, crowdgpu_event* out, uint32_t capacity, uint32_t* count) {
     if (!crowd || !count || (character_count > 0 && !characters) || (capacity > 0 && !out))
         return invalid("crowdgpu_crowd_events: crowd, characters, out or count is NULL");
-    // Reused per thread, so a host asking every frame allocates nothing once warm.
+    // Listed only when they fit the caller's buffer (`out` NULL, capacity 0: counted, nothing stored);
+    // the list is reused per thread, so a host asking every frame allocates nothing once warm.
     thread_local std::vector<crowdgpu::Event> fired;
     return guarded([&] {
-        crowd->crowd.events(characters, character_count, from, to, fired);
-        if (fired.size() > UINT32_MAX)
+        const std::uint64_t total = crowd->crowd.events(characters, character_count, from, to, fired, capacity);
+        const bool fits = total <= capacity;
+        if (fits)
+            for (std::size_t i = 0; i < fired.size(); ++i)
+                out[i] = {fired[i].character, fired[i].clip, fired[i].event, fired[i].time};
+        if (fired.capacity() > 65536) std::vector<crowdgpu::Event>().swap(fired);  // no high-water mark kept
+        if (total > UINT32_MAX)
             throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument, "crowdgpu_crowd_events: more than 2^32 events");
-        *count = static_cast<uint32_t>(fired.size());
-        if (fired.size() > capacity)
+        *count = static_cast<uint32_t>(total);
+        if (!fits)
             throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument,
-                                  "crowdgpu_crowd_events: " + std::to_string(fired.size()) + " events fired, room for " +
+                                  "crowdgpu_crowd_events: " + std::to_string(total) + " events fired, room for " +
                                       std::to_string(capacity));
-        for (std::size_t i = 0; i < fired.size(); ++i)
-            out[i] = {fired[i].character, fired[i].clip, fired[i].event, fired[i].time};
     });
 }
 

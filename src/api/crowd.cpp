@@ -37,6 +37,16 @@ crowd::Character toInternal(const Character& c) {
     return result;
 }
 
+// Frees a thread's scratch list when a call grew it past what a frame needs (65,536 events, 1.5 MiB:
+// a frame's window of a million walking characters), so no thread keeps a high-water mark for life.
+struct ScratchRelease {
+    static constexpr std::size_t kKept = 65536;
+    std::vector<crowd::FiredEvent>& scratch;
+    ~ScratchRelease() {
+        if (scratch.capacity() > kKept) std::vector<crowd::FiredEvent>().swap(scratch);
+    }
+};
+
 crowd::BehaviourSettings behaviourOf(Behaviour behaviour, std::uint32_t seed) {
     detail::checkBehaviour("Crowd", behaviour);
     crowd::BehaviourSettings settings;
@@ -159,14 +169,26 @@ void Crowd::jointWorld(std::uint32_t character, std::uint32_t joint, double time
 
 void Crowd::events(const std::uint32_t* characters, std::size_t count, double from, double to,
                    std::vector<Event>& out) const {
+    events(characters, count, from, to, out, SIZE_MAX);
+}
+
+std::uint64_t Crowd::events(const std::uint32_t* characters, std::size_t count, double from, double to,
+                            std::vector<Event>& out, std::size_t capacity) const {
     detail::checkEventWindow(characters, count, from, to);
-    detail::translated([&] {
+    out.clear();
+    return detail::translated([&] {
+        // This thread's scratch: a host asking every frame allocates nothing once warm, and a rare
+        // large list does not keep its memory after the call, thrown or not.
         thread_local std::vector<crowd::FiredEvent> fired;
+        const ScratchRelease release{fired};
         fired.clear();
-        data_->crowd().events({characters, count}, from, to, fired);
-        out.clear();
-        out.reserve(fired.size());
-        for (const crowd::FiredEvent& e : fired) out.push_back({e.character, e.clip, e.event, e.time});
+        crowd::EventSink sink{capacity > 0 ? &fired : nullptr, capacity};
+        data_->crowd().events({characters, count}, from, to, sink);
+        if (sink.count <= capacity) {
+            out.reserve(fired.size());
+            for (const crowd::FiredEvent& e : fired) out.push_back({e.character, e.clip, e.event, e.time});
+        }
+        return sink.count;
     });
 }
 

@@ -432,8 +432,7 @@ anim::Affine Crowd::jointWorld(std::uint32_t index, std::uint32_t joint, double 
     return world[joint];
 }
 
-void Crowd::events(std::span<const std::uint32_t> characters, double from, double to,
-                   std::vector<FiredEvent>& out) const {
+void Crowd::events(std::span<const std::uint32_t> characters, double from, double to, EventSink& out) const {
     for (const std::uint32_t c : characters) {
         checkCharacter(c);
         if (!(from >= knownFrom_[c]))
