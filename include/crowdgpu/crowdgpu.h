@@ -202,7 +202,8 @@ typedef struct crowdgpu_frame_view {
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
                       VkExtent2D extent, double time, crowdgpu_frame_view* out);
 
-/* Device bytes a renderer with these settings will allocate for the crowd (0 on failure). */
+/* Device bytes a renderer with these settings will allocate for the crowd (0 on failure, e.g. a NULL
+   physical device; crowdgpu_last_error() says why). */
 uint64_t crowdgpu_memory_needed(VkPhysicalDevice physical_device, crowdgpu_crowd crowd,
                                 const crowdgpu_renderer_settings* settings);
 

@@ -283,6 +283,7 @@ using PassObserver = std::function<void(VkCommandBuffer cmd, const char* pass)>;
 
 // Device bytes a renderer with these settings takes for this crowd: the sum of what the renderer's
 // constructor allocates, from the same planner. Compare with the device's heap before creating one.
+// This and the two queries below throw Error(InvalidArgument) for a null physical device.
 std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings);
 
 // Whether the device's limits allow this crowd with these settings: the most characters of the
