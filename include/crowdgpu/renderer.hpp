@@ -308,7 +308,8 @@ public:
     // Builds pipelines for settings.target and allocates the crowd's buffers; their contents wait in
     // recordSetup. Throws Error: Unsupported (a feature missing from Device::enabledFeatures, a
     // format the device cannot render to), OutOfDeviceMemory (over memoryNeeded's budget), or
-    // InvalidArgument. The crowd must outlive the renderer; it reads it at every recordCompute.
+    // InvalidArgument (a value that is no Vulkan 1.3 format or no value of its enum, checked before
+    // any Vulkan call sees it; docs/embedding.md, "Argument ranges"). The crowd must outlive the renderer; it reads it at every recordCompute.
     Renderer(const Device& device, Crowd& crowd, const RendererSettings& settings);
     ~Renderer();
     Renderer(Renderer&&) noexcept;
