@@ -2,6 +2,7 @@
  * validation; any message fails) and device, builds a soldier crowd, creates a renderer with the
  * library's default formats, records setup and a few frames into its own offscreen target, reads the
  * image back and checks the crowd is in it; and checks the error codes of misuse. Exit 0: all well. */
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -286,8 +287,55 @@ int main(void) {
                crowdgpu_crowd_events(NULL, everyone, 16, 0.0, 2.0, events, 256, &small) == CROWDGPU_ERROR_INVALID_ARGUMENT,
            "events with NULLs");
 
+    /* Arguments checked at the door (issue 41): non-finite times and characters on a milling crowd (were
+     * SIGSEGVs), an unbounded event window (ran out of memory), a behaviour outside the enum (was an
+     * in-place crowd), a NULL physical device (a SIGSEGV): each INVALID_ARGUMENT naming it. */
+    {
+        crowdgpu_model walker = NULL;
+        EXPECT(crowdgpu_model_soldier(1, &walker) == CROWDGPU_OK, "soldier: %s", crowdgpu_last_error());
+        crowdgpu_crowd mill = NULL;
+        EXPECT(crowdgpu_crowd_create_grid(&walker, 1, 8, 1, CROWDGPU_MILL, &mill) == CROWDGPU_OK, "mill: %s",
+               crowdgpu_last_error());
+        float rows[12];
+        EXPECT(crowdgpu_crowd_advance_to(mill, INFINITY) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "advanceTo: time") != NULL,
+               "advance_to(inf): %s", crowdgpu_last_error());
+        EXPECT(crowdgpu_crowd_advance_to(mill, NAN) == CROWDGPU_ERROR_INVALID_ARGUMENT, "advance_to(nan)");
+        EXPECT(crowdgpu_crowd_joint_world(mill, 0, 0, INFINITY, rows) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   crowdgpu_crowd_joint_world(mill, 0, 0, 1e300, rows) == CROWDGPU_ERROR_INVALID_ARGUMENT,
+               "joint_world at inf and 1e300: %s", crowdgpu_last_error());
+        crowdgpu_character bad_phase = {0, 0, NAN, 1.0f, {0.0f, 0.0f, 0.0f}, 0.0f, 1.0f, {1.0f, 1.0f, 1.0f}};
+        EXPECT(crowdgpu_crowd_spawn(mill, &bad_phase, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "phase") != NULL,
+               "spawn with a NaN phase: %s", crowdgpu_last_error());
+        bad_phase.phase = INFINITY;
+        EXPECT(crowdgpu_crowd_spawn(mill, &bad_phase, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT, "spawn with an inf phase");
+        EXPECT(crowdgpu_crowd_move_to(mill, 0, NAN, 0.0f, 1.0) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   crowdgpu_crowd_play(mill, 0, 0, 1.0, NAN) == CROWDGPU_ERROR_INVALID_ARGUMENT,
+               "move_to a NaN x, play with a NaN fade");
+        uint32_t counted = 0;
+        EXPECT(crowdgpu_crowd_events(mill, everyone, 8, 0.0, INFINITY, NULL, 0, &counted) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "events: to") != NULL,
+               "events to inf: %s", crowdgpu_last_error());
+        EXPECT(crowdgpu_crowd_events(mill, everyone, 8, 0.0, 1e6, NULL, 0, &counted) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "longer than") != NULL,
+               "events over 1e6 s: %s", crowdgpu_last_error());
+        EXPECT(crowdgpu_crowd_size(mill) == 8 && crowdgpu_crowd_advance_to(mill, 30.0) == CROWDGPU_OK &&
+                   crowdgpu_crowd_joint_world(mill, 7, 0, 30.0, rows) == CROWDGPU_OK && isfinite(rows[3]),
+               "the milling crowd after the refusals: %s", crowdgpu_last_error());
+        crowdgpu_crowd_destroy(mill);
+        crowdgpu_crowd other = NULL;
+        EXPECT(crowdgpu_crowd_create_grid(&walker, 1, 4, 1, (crowdgpu_behaviour)99, &other) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   other == NULL && strstr(crowdgpu_last_error(), "behaviour 99") != NULL,
+               "behaviour 99: %s", crowdgpu_last_error());
+        crowdgpu_model_destroy(walker);
+    }
+
     crowdgpu_renderer_settings settings;
     crowdgpu_renderer_settings_default(&settings);
+    EXPECT(crowdgpu_memory_needed(VK_NULL_HANDLE, crowd, &settings) == 0 &&
+               strstr(crowdgpu_last_error(), "no physical device") != NULL,
+           "memory_needed without a physical device: %s", crowdgpu_last_error());
     EXPECT(settings.color_format == VK_FORMAT_R8G8B8A8_SRGB && settings.depth_format == VK_FORMAT_D32_SFLOAT,
            "default formats %d, %d", settings.color_format, settings.depth_format);
     EXPECT(settings.raster == CROWDGPU_RASTER_AUTO && settings.mesh_raster_limit == -1.0f && settings.shadow_lod &&
@@ -308,6 +356,26 @@ int main(void) {
         EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
                    strstr(crowdgpu_last_error(), "raster mode 7") != NULL && refused == NULL,
                "raster 7: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.method = (crowdgpu_method)99;
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "method 99") != NULL && refused == NULL,
+               "method 99: %s", crowdgpu_last_error());
+        bad = settings;
+        const unsigned char two = 2; /* a bool a C host wrote as bytes */
+        memcpy(&bad.shadows, &two, 1);
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "shadows: 2") != NULL,
+               "shadows 2: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.color_format = (VkFormat)0x7fffffff; /* no format: refused before the driver sees it */
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+                   strstr(crowdgpu_last_error(), "not a Vulkan 1.3 format") != NULL,
+               "colour format 0x7fffffff: %s", crowdgpu_last_error());
+        bad = settings;
+        bad.color_format = VK_FORMAT_D32_SFLOAT; /* a depth format as colour */
+        EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_UNSUPPORTED,
+               "D32 as colour: %s", crowdgpu_last_error());
         bad = settings;
         bad.mesh_raster_limit = -5.0f;
         EXPECT(crowdgpu_renderer_create(&lent, crowd, &bad, &refused) == CROWDGPU_ERROR_INVALID_ARGUMENT &&

@@ -300,7 +300,14 @@ TEST(AnimationEvents, GltfEventJointIsTheSkeletonsJointOfThatName) {
     EXPECT_NE(m.clips[0].events[0].joint, m.clips[0].events[1].joint);
 }
 
+TEST(AnimationEvents, AnEmptyEventListIsAClipWithoutEvents) {
+    test::GltfBuilder b = test::stripCharacter();
+    b.doc["animations"][0]["extras"] = nlohmann::json::parse(R"({"events": []})");
+    EXPECT_TRUE(test::loadText(b.gltf()).clips[0].events.empty());
+}
+
 TEST(AnimationEvents, MalformedGltfEventsAreRefusedInOneLine) {
+    const auto J = [](const char* text) { return nlohmann::json::parse(text); };
     const std::vector<std::pair<nlohmann::json, std::string>> cases = {
         {{{"events", {{"name", "x"}}}}, "animations[0].extras.events: expected an array"},
         {{{"events", {7}}}, "animations[0].extras.events[0]: expected an object"},
@@ -312,6 +319,17 @@ TEST(AnimationEvents, MalformedGltfEventsAreRefusedInOneLine) {
          "animations[0].extras.events[0].joint: no joint named 'tail'"},
         {{{"events", {{{"name", "x"}, {"time", 0.1}, {"joint", 1}}}}}, "animations[0].extras.events[0].joint: expected"},
         {{{"events", {{{"name", "x"}, {"time", 0.1}, {"joint", "body"}}}}}, "no joint named 'body'"},  // a node, not a joint
+        // tinygltf drops null, [] and {} from extras: each of these loaded silently as no event (issue 41).
+        {J(R"({"events": null})"), "animations[0].extras.events: expected an array of {\"name\": string, \"time\": seconds}, found null"},
+        {J(R"({"events": {}})"), "animations[0].extras.events: expected an array"},
+        {J(R"({"events": [null]})"), "animations[0].extras.events[0]: expected an object {\"name\": string, \"time\": seconds}, found null"},
+        {J(R"({"events": [{}]})"), "animations[0].extras.events[0].name: expected a non-empty string, found none"},
+        {J(R"({"events": [[]]})"), "animations[0].extras.events[0]: expected an object"},
+        {J(R"({"events": [{"name": "x", "time": 0.1}, null]})"), "animations[0].extras.events[1]: expected an object"},
+        {J(R"({"events": [{"name": null, "time": 0.1}]})"), "animations[0].extras.events[0].name: expected a non-empty string, found null"},
+        {J(R"({"events": [{"name": "x", "time": null}]})"), "animations[0].extras.events[0].time: expected a number of seconds, found null"},
+        {J(R"({"events": [{"name": "x", "time": 0.1, "joint": {}}]})"),
+         "animations[0].extras.events[0].joint: expected the name of a joint (a string), found an object"},
     };
     for (const auto& [extras, mention] : cases) {
         test::GltfBuilder b = test::stripCharacter();

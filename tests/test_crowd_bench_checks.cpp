@@ -216,4 +216,14 @@ TEST(CrowdBenchChecks, TheFrameLogHoldsTheFramesTheSummaryComesFrom) {
     std::filesystem::remove(csv);
 }
 
+// --palette measures bone palettes, not frames: before, --frame-log with it wrote no file and exited 0.
+TEST(CrowdBenchChecks, AFrameLogWithPaletteIsRefusedInOneLine) {
+    const std::string log = tempFile("palette-frames.csv");
+    const test::ProgramResult r = test::runProgram(kBench, "--palette --counts 16" + kSmall + deviceFlag() + " --frame-log " + log);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err,
+              "crowd-bench: --frame-log: --palette measures bone palettes, not frames; there is no frame log to write\n");
+    EXPECT_FALSE(std::filesystem::exists(log));
+}
+
 }  // namespace

@@ -286,6 +286,16 @@ TEST(CrowdRenderCli, StandardOutputThatCannotBeWrittenFailsTheRun) {
     }
 }
 
+TEST(CrowdRenderCli, AJsonToAStandardOutputThatCannotBeWrittenFailsInOneLine) {
+    // One failure, one line: before, the JSON's failed write to /dev/stdout was reported, and then the
+    // same stream again at exit ("cannot write standard output").
+    const std::string toFullDevice = "sh -c 'exec \"$0\" \"$@\" >/dev/full' " + kRender;
+    const test::ProgramResult r =
+        test::runProgram(toFullDevice, "--count 1 --frames 1 --size 32x32 --out /dev/null --json /dev/stdout");
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err, "crowd-render: cannot write /dev/stdout: No space left on device\n");
+}
+
 TEST(CrowdRenderCli, LateStartsRunInEveryKindOfScene) {
     // Living crowds go straight to the episode holding --start. Before, 64 milling characters at 1e6 s
     // replanned every segment from 0 s for minutes: the time limit fails such a run long before.

@@ -455,6 +455,49 @@ TEST(ViewerProgram, WindowLargerThanTheDeviceCanPresentIsShrunkWithValidationSil
     std::filesystem::remove(script);
 }
 
+TEST(ViewerProgram, AWindowPastTheDevicesLimitsWithMultisamplingIsDrawnScaled) {
+    SKIP_WITHOUT_XVFB();
+    if (!onPath("xdotool")) GTEST_SKIP() << "xdotool not found: it resizes the window (apt-get install xdotool)";
+    // 16384 x 16384 with 4 samples a pixel is a 4 GiB multisampled colour image (and as much depth): past
+    // lavapipe's maxResourceSize and its 2 GiB heap, and most GPUs'. Before, the viewer quit with
+    // validation errors and VK_ERROR_OUT_OF_DEVICE_MEMORY. Now it draws at the largest size of the
+    // window's shape that fits, scaled up, and says so; back at a small size it draws 1:1 again.
+    const std::string png = tempFile("huge-msaa.png");
+    const std::string log = tempFile("huge-msaa.log");
+    const std::string script = tempFile("huge-msaa.sh");
+    std::ofstream(script) << "set -e\n"
+                          << kView << " --count 4 --size 160x120 --aa msaa4 --no-ui --validation" << deviceFlag()
+                          << " --screenshot " << png << " > " << log << " &\n"
+                          << "pid=$!\n"
+                          << "wid=$(xdotool search --sync --name '^crowd-view$' | head -n 1)\n"
+                          << "xdotool windowsize $wid 16384 16384\n"
+                          // The viewer notes the scaled size when it recreates its swapchain, then draws.
+                          << "for i in $(seq 120); do grep -q 'scaled up' " << log << " && break; sleep 1; done\n"
+                          << "sleep 10\n"
+                          << "xdotool windowsize $wid 240 100\nsleep 3\n"
+                          << "xdotool windowfocus $wid key F12\nsleep 2\n"
+                          << "xdotool key Escape\n"
+                          << "status=0; wait $pid || status=$?\n"
+                          << "cat " << log << "\nexit $status\n";
+    const test::ProgramResult r = runUnderXvfb("sh", script);
+    expectCleanRun(r);
+    EXPECT_EQ(r.err.find("OUT_OF_DEVICE_MEMORY"), std::string::npos) << r.err;
+    const std::size_t note = r.out.find("the 16384x16384 window is drawn at ");
+    ASSERT_NE(note, std::string::npos) << r.out;
+    unsigned width = 0, height = 0;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + note, "the 16384x16384 window is drawn at %ux%u", &width, &height), 2) << r.out;
+    EXPECT_LT(width, 16384u);
+    EXPECT_EQ(width, height) << "the window's shape is kept";
+    EXPECT_GE(width, 1024u);
+    EXPECT_NE(r.out.find("msaa4"), std::string::npos) << "the note names the anti-aliasing kept: " << r.out;
+    const app::Rgba8Image viewer = readPng(png);
+    EXPECT_EQ(viewer.width, 240u) << r.out;
+    EXPECT_EQ(viewer.height, 100u);
+    std::filesystem::remove(png);
+    std::filesystem::remove(log);
+    std::filesystem::remove(script);
+}
+
 TEST(ViewerProgram, BadFlagsAndNoDisplayFailWithOneLine) {
     // None of these needs a display: they fail before a window opens.
     struct Case {

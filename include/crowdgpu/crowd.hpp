@@ -124,6 +124,15 @@ struct GaitSettings {
     float turnSpeed = 0.05f;
 };
 
+// Scene times every call takes (advanceTo, stateAt, jointWorld, events, moveTo, play, a frame's time):
+// finite and within +-kLargestTime seconds (317 years: a run started at 1e9 s, the latest start the
+// programs take and the library is tested at, as exact as at 0 s, goes on for centuries). Any other
+// value, and any non-finite position, speed, scale, phase, heading, tint, rate or fade, is refused with
+// Error(InvalidArgument) naming it (docs/embedding.md, "Argument ranges").
+inline constexpr double kLargestTime = 1e10;
+// The longest window (to - from, seconds) events() answers: a frame's is a few milliseconds.
+inline constexpr double kLargestEventWindow = 3600.0;
+
 enum class Behaviour { InPlace, March, Mill };
 // "in-place", "march", "mill": for reports and menus.
 const char* behaviourName(Behaviour behaviour);
@@ -266,11 +275,17 @@ public:
     // reported as the event of the clip that weighs more then; any other event fires from its clip
     // while that clip weighs more (the clip faded to from half way on). The window obeys jointWorld's times: ask for each frame's (previous time, time] after
     // advanceTo(time); a window reaching back before a character's previous segment throws
-    // Error(InvalidArgument), as does a character that does not exist. Cost: about 100 ns a
+    // Error(InvalidArgument), as do a character that does not exist and a window longer than
+    // kLargestEventWindow. Cost: about 100 ns a
     // character for a frame's window (docs/events.md), calling thread only; safe to call from
     // several threads at once (it changes nothing).
     void events(const std::uint32_t* characters, std::size_t count, double from, double to,
                 std::vector<Event>& out) const;
+    // The same window with a limit: returns how many events fire and lists them in `out` only when
+    // they are at most `capacity` (else `out` is left empty), so the memory a call takes is bounded
+    // by the caller. Capacity 0: the count alone, with no storage at all.
+    std::uint64_t events(const std::uint32_t* characters, std::size_t count, double from, double to,
+                         std::vector<Event>& out, std::size_t capacity) const;
 
     // The ground every character stands on, copied (columns 0: flat again, y = 0). Error(InvalidArgument)
     // naming the problem for fewer than 2 x 2 samples, heights that are not finite, or an extent that is not

@@ -170,7 +170,10 @@ crowdgpu_result crowdgpu_crowd_set_world_bounds(crowdgpu_crowd crowd, const floa
 crowdgpu_result crowdgpu_crowd_move_to(crowdgpu_crowd crowd, uint32_t character, float x, float z, double at);
 crowdgpu_result crowdgpu_crowd_play(crowdgpu_crowd crowd, uint32_t character, int32_t clip, double at, float fade);
 /* Plans every character up to `time` seconds: once per frame, before recording. Scene times are
- * doubles: a crowd is as exact at 1e9 s as at 0 s. */
+ * doubles: a crowd is as exact at 1e9 s as at 0 s. Every call refuses a time that is not finite or lies
+ * outside +-1e10 s (crowdgpu::kLargestTime), and any NaN, infinite or out-of-range position, speed,
+ * phase, heading, scale, tint, rate, fade or enum value, with CROWDGPU_ERROR_INVALID_ARGUMENT naming it
+ * (docs/embedding.md, "Argument ranges"). */
 crowdgpu_result crowdgpu_crowd_advance_to(crowdgpu_crowd crowd, double time);
 /* The slots, living or free (crowdgpu::Crowd::size). */
 uint32_t crowdgpu_crowd_size(crowdgpu_crowd crowd);
@@ -193,9 +196,10 @@ typedef struct crowdgpu_event {
  * by character in the order given, each in time order; exact, the same split over any frames). Sets
  * *count to how many fired and writes them to out[0 .. *count) when they fit in `capacity`; when
  * they do not, writes none and returns CROWDGPU_ERROR_INVALID_ARGUMENT (call again with room for
- * *count; capacity 0 and out NULL asks for the count alone). A character that does not exist or a
- * window before what the crowd still knows is CROWDGPU_ERROR_INVALID_ARGUMENT. About 100 ns a
- * character for a frame's window. */
+ * *count; capacity 0 and out NULL asks for the count alone, which stores no event). A character that
+ * does not exist, a window before what the crowd still knows or longer than 3,600 s
+ * (crowdgpu::kLargestEventWindow) is CROWDGPU_ERROR_INVALID_ARGUMENT. About 100 ns a character for a
+ * frame's window; memory: at most `capacity` events, none kept after the call past 1.5 MiB. */
 crowdgpu_result crowdgpu_crowd_events(crowdgpu_crowd crowd, const uint32_t* characters, uint32_t character_count,
                                       double from, double to, crowdgpu_event* out, uint32_t capacity, uint32_t* count);
 void crowdgpu_crowd_bounds(crowdgpu_crowd crowd, float center[3], float* radius, float* tallest);
@@ -270,7 +274,8 @@ typedef struct crowdgpu_frame_view {
 void crowdgpu_look_at(const float eye[3], const float target[3], float vertical_fov, float near_plane, float far_plane,
                       VkExtent2D extent, double time, crowdgpu_frame_view* out);
 
-/* Device bytes a renderer with these settings will allocate for the crowd (0 on failure). */
+/* Device bytes a renderer with these settings will allocate for the crowd (0 on failure, e.g. a NULL
+   physical device; crowdgpu_last_error() says why). */
 uint64_t crowdgpu_memory_needed(VkPhysicalDevice physical_device, crowdgpu_crowd crowd,
                                 const crowdgpu_renderer_settings* settings);
 

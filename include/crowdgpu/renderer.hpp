@@ -316,6 +316,7 @@ using PassObserver = std::function<void(VkCommandBuffer cmd, const char* pass)>;
 
 // Device bytes a renderer with these settings takes for this crowd: the sum of what the renderer's
 // constructor allocates, from the same planner. Compare with the device's heap before creating one.
+// This and the two queries below throw Error(InvalidArgument) for a null physical device.
 std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings);
 
 // Whether the device's limits allow this crowd with these settings: the most characters of the
@@ -340,8 +341,9 @@ public:
     // Builds pipelines for settings.target and allocates buffers for the crowd's slots (its capacity:
     // Crowd::size()); their contents wait in recordSetup. Throws Error: Unsupported (a feature missing
     // from Device::enabledFeatures, a format the device cannot render to), OutOfDeviceMemory (over
-    // memoryNeeded's budget), or InvalidArgument. The renderer keeps no reference to the crowd (it keeps
-    // its models alive): each recordCompute is handed the crowd to draw.
+    // memoryNeeded's budget), or InvalidArgument (a value that is no Vulkan 1.3 format or no value of its
+    // enum, checked before any Vulkan call sees it; docs/embedding.md, "Argument ranges"). The renderer
+    // keeps no reference to the crowd (it keeps its models alive): each recordCompute is handed the crowd.
     Renderer(const Device& device, const Crowd& crowd, const RendererSettings& settings);
     ~Renderer();
     Renderer(Renderer&&) noexcept;

@@ -41,7 +41,8 @@ glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float s);
 // The key span holding t: first the cursor's span and the one after it, then a binary search (inline:
 // both jobs call it for every keyed track of every character).
 inline KeySpan findKeysFromCursor(const float* times, std::uint32_t count, float t, std::uint16_t& cursor) {
-    if (count < 2 || t <= times[0]) return {0, 0.0f, 0.0f};
+    // !(t > first): a NaN time holds the first key too, rather than searching past the last.
+    if (count < 2 || !(t > times[0])) return {0, 0.0f, 0.0f};
     if (t >= times[count - 1]) return {count - 1, 0.0f, 0.0f};
     std::uint32_t key = std::min<std::uint32_t>(cursor, count - 2);
     if (!(times[key] <= t && t < times[key + 1])) {

@@ -48,31 +48,70 @@ crowdgpu_result invalid(const std::string& message) {
     return CROWDGPU_ERROR_INVALID_ARGUMENT;
 }
 
+// C enums and bools as the integers the host stored. Loading a value outside a C++ enum's or bool's
+// range as that type is undefined behaviour (UBSan stops on it), and a C host can store any integer:
+// each is read as its bytes, and is checked before it becomes a C++ value. The enums' ranges are the
+// C++ API's checks (the C enums have the C++ enums' numbers); what only C can get wrong is checked here.
+template <class T>
+std::int64_t stored(const T& field) {
+    static_assert(sizeof(T) == 1 || sizeof(T) == 4, "a C bool or enum");
+    if constexpr (sizeof(T) == 1) {
+        unsigned char byte;
+        std::memcpy(&byte, &field, 1);
+        return byte;
+    } else {
+        std::int32_t value;
+        std::memcpy(&value, &field, 4);
+        return value;
+    }
+}
+
+bool boolOf(const char* name, const bool& field) {
+    const std::int64_t value = stored(field);
+    if (value > 1)
+        throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument,
+                              std::string("crowdgpu_renderer_settings.") + name + ": " + std::to_string(value) +
+                                  " is not a bool (0 or 1)");
+    return value == 1;
+}
+
+// A Vulkan enum (VkFormat, VkSampleCountFlagBits) holds 0 .. 0x7FFFFFFF; the C++ API checks the value.
+template <class T>
+T vulkanEnumOf(const char* name, const T& field) {
+    const std::int64_t value = stored(field);
+    if (value < 0)
+        throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument, std::string("crowdgpu_renderer_settings.") + name +
+                                                                        ": " + std::to_string(value) + " is negative");
+    return static_cast<T>(value);
+}
+
 crowdgpu::RendererSettings settingsOf(const crowdgpu_renderer_settings& s) {
     crowdgpu::RendererSettings r;
-    r.target = {s.color_format, s.depth_format, s.samples};
-    r.method = static_cast<crowdgpu::Method>(s.method);
-    r.animation = s.gpu_animation ? crowdgpu::Animation::Gpu : crowdgpu::Animation::Cpu;
-    r.lod = s.lod;
-    r.impostors = s.impostors;
+    r.target = {vulkanEnumOf("color_format", s.color_format), vulkanEnumOf("depth_format", s.depth_format),
+                vulkanEnumOf("samples", s.samples)};
+    r.method = static_cast<crowdgpu::Method>(stored(s.method));
+    r.animation = boolOf("gpu_animation", s.gpu_animation) ? crowdgpu::Animation::Gpu : crowdgpu::Animation::Cpu;
+    r.lod = boolOf("lod", s.lod);
+    r.impostors = boolOf("impostors", s.impostors);
     r.impostorThreshold = s.impostor_threshold;
     r.meshCapacity = s.mesh_capacity;
-    r.shadows = s.shadows;
+    r.shadows = boolOf("shadows", s.shadows);
     r.shadowMapSize = s.shadow_map_size;
     r.framesInFlight = s.frames_in_flight;
-    r.raster = static_cast<crowdgpu::Raster>(s.raster);
+    r.raster = static_cast<crowdgpu::Raster>(stored(s.raster));
     r.meshRasterLimit = s.mesh_raster_limit;
-    r.shadowLod = s.shadow_lod;
-    r.shadowRaster = s.shadow_raster_compute ? crowdgpu::ShadowRaster::Compute : crowdgpu::ShadowRaster::Hardware;
-    r.impostorBlend = s.impostor_blend;
-    r.lodFade = s.lod_fade;
-    r.events = s.events;
+    r.shadowLod = boolOf("shadow_lod", s.shadow_lod);
+    r.shadowRaster = boolOf("shadow_raster_compute", s.shadow_raster_compute) ? crowdgpu::ShadowRaster::Compute
+                                                                               : crowdgpu::ShadowRaster::Hardware;
+    r.impostorBlend = boolOf("impostor_blend", s.impostor_blend);
+    r.lodFade = boolOf("lod_fade", s.lod_fade);
+    r.events = boolOf("events", s.events);
     r.eventCapacity = s.event_capacity;
     r.shadowCascades = s.shadow_cascades;
-    r.farCrowd = s.far_crowd;
-    r.ground = s.ground;
-    r.sky = s.sky;
-    r.edgeFilter = s.edge_filter;
+    r.farCrowd = boolOf("far_crowd", s.far_crowd);
+    r.ground = boolOf("ground", s.ground);
+    r.sky = boolOf("sky", s.sky);
+    r.edgeFilter = boolOf("edge_filter", s.edge_filter);
     r.terrainSamples = s.terrain_samples;
     return r;
 }
@@ -204,7 +243,8 @@ crowdgpu_result crowdgpu_crowd_create_grid(const crowdgpu_model* models, uint32_
         crowdgpu::GridLayout layout;
         layout.count = count;
         layout.seed = seed;
-        *out = new crowdgpu_crowd_t{crowdgpu::Crowd::grid(std::move(list), layout, static_cast<crowdgpu::Behaviour>(behaviour))};
+        *out = new crowdgpu_crowd_t{
+            crowdgpu::Crowd::grid(std::move(list), layout, static_cast<crowdgpu::Behaviour>(stored(behaviour)))};
     });
 }
 
@@ -372,19 +412,23 @@ crowdgpu_result crowdgpu_crowd_events(crowdgpu_crowd crowd, const uint32_t* char
                                       double from, double to, crowdgpu_event* out, uint32_t capacity, uint32_t* count) {
     if (!crowd || !count || (character_count > 0 && !characters) || (capacity > 0 && !out))
         return invalid("crowdgpu_crowd_events: crowd, characters, out or count is NULL");
-    // Reused per thread, so a host asking every frame allocates nothing once warm.
+    // Listed only when they fit the caller's buffer (`out` NULL, capacity 0: counted, nothing stored);
+    // the list is reused per thread, so a host asking every frame allocates nothing once warm.
     thread_local std::vector<crowdgpu::Event> fired;
     return guarded([&] {
-        crowd->crowd.events(characters, character_count, from, to, fired);
-        if (fired.size() > UINT32_MAX)
+        const std::uint64_t total = crowd->crowd.events(characters, character_count, from, to, fired, capacity);
+        const bool fits = total <= capacity;
+        if (fits)
+            for (std::size_t i = 0; i < fired.size(); ++i)
+                out[i] = {fired[i].character, fired[i].clip, fired[i].event, fired[i].time};
+        if (fired.capacity() > 65536) std::vector<crowdgpu::Event>().swap(fired);  // no high-water mark kept
+        if (total > UINT32_MAX)
             throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument, "crowdgpu_crowd_events: more than 2^32 events");
-        *count = static_cast<uint32_t>(fired.size());
-        if (fired.size() > capacity)
+        *count = static_cast<uint32_t>(total);
+        if (!fits)
             throw crowdgpu::Error(crowdgpu::ErrorCode::InvalidArgument,
-                                  "crowdgpu_crowd_events: " + std::to_string(fired.size()) + " events fired, room for " +
+                                  "crowdgpu_crowd_events: " + std::to_string(total) + " events fired, room for " +
                                       std::to_string(capacity));
-        for (std::size_t i = 0; i < fired.size(); ++i)
-            out[i] = {fired[i].character, fired[i].clip, fired[i].event, fired[i].time};
     });
 }
 

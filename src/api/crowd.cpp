@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "api/api_data.h"
+#include "api/crowd_arguments.h"
 #include "crowd/host_memory.h"
 #include "crowd/worker_pool.h"
 
@@ -39,7 +40,18 @@ crowd::Character toInternal(const Character& c) {
     return result;
 }
 
+// Frees a thread's scratch list when a call grew it past what a frame needs (65,536 events, 1.5 MiB:
+// a frame's window of a million walking characters), so no thread keeps a high-water mark for life.
+struct ScratchRelease {
+    static constexpr std::size_t kKept = 65536;
+    std::vector<crowd::FiredEvent>& scratch;
+    ~ScratchRelease() {
+        if (scratch.capacity() > kKept) std::vector<crowd::FiredEvent>().swap(scratch);
+    }
+};
+
 crowd::BehaviourSettings behaviourOf(Behaviour behaviour, std::uint32_t seed) {
+    detail::checkBehaviour("Crowd", behaviour);
     crowd::BehaviourSettings settings;
     settings.kind = behaviour == Behaviour::March ? crowd::Behaviour::March
                     : behaviour == Behaviour::Mill ? crowd::Behaviour::Mill
@@ -74,15 +86,16 @@ Crowd::Crowd(std::vector<Model> models, std::vector<Character> characters, Behav
              const CrowdCapacity& capacity) {
     std::vector<crowd::Character> internal;
     internal.reserve(characters.size());
+    for (std::size_t i = 0; i < characters.size(); ++i)
+        if (!detail::characterInRange(characters[i]))
+            detail::checkCharacter("Crowd", "character " + std::to_string(i), characters[i]);
     for (const Character& c : characters) internal.push_back(toInternal(c));
     data_ = makeData(std::move(models), std::move(internal), behaviour, seed, capacity);
 }
 
 Crowd Crowd::grid(std::vector<Model> models, const GridLayout& layout, Behaviour behaviour, const CrowdCapacity& capacity) {
-    if (layout.count == 0) throw Error(ErrorCode::InvalidArgument, "a grid of 0 characters");
-    if (!(layout.depthRatio > 0.0f) || !std::isfinite(layout.depthRatio))
-        throw Error(ErrorCode::InvalidArgument, "a grid's depthRatio must be a positive number, not " +
-                                                    std::to_string(layout.depthRatio));
+    detail::checkGridLayout(layout);
+    detail::checkBehaviour("Crowd::grid", behaviour);
     crowd::LayoutOptions options;
     options.count = layout.count;
     options.seed = layout.seed;
@@ -113,6 +126,7 @@ const std::vector<Model>& Crowd::models() const { return data_->models; }
 std::uint32_t Crowd::liveCount() const { return data_->crowd().population().live(); }
 
 CharacterHandle Crowd::spawn(const Character& character) {
+    detail::checkCharacter("spawn", "the character", character);
     return detail::translated([&] {
         const crowd::Handle h = data_->crowd().spawn(toInternal(character));
         return CharacterHandle{h.slot, h.generation};
@@ -129,7 +143,11 @@ void Crowd::spawn(const Character* characters, std::size_t count, CharacterHandl
     thread_local std::vector<crowd::Handle> made;
     internal.resize(count);
     made.resize(count);
-    for (std::size_t i = 0; i < count; ++i) internal[i] = toInternal(characters[i]);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!detail::characterInRange(characters[i]))
+            detail::checkCharacter("spawn", "character " + std::to_string(i) + " of the batch", characters[i]);
+        internal[i] = toInternal(characters[i]);
+    }
     detail::translated([&] { data_->crowd().spawn(internal.data(), count, made.data()); });
     for (std::size_t i = 0; i < count; ++i) handles[i] = {made[i].slot, made[i].generation};
 }
@@ -162,18 +180,22 @@ CharacterHandle Crowd::handle(std::uint32_t slot) const {
 }
 
 void Crowd::moveTo(std::uint32_t character, float x, float z, double at, std::int32_t gait, float rate) {
+    detail::checkMoveTo(x, z, at, rate);
     detail::translated([&] { data_->crowd().moveTo(character, glm::vec2(x, z), at, gait, rate); });
 }
 
 void Crowd::play(std::uint32_t character, std::int32_t clip, double at, float fade, float rate) {
+    detail::checkPlay(at, fade, rate);
     detail::translated([&] { data_->crowd().play(character, clip, at, fade, rate); });
 }
 
 void Crowd::advanceTo(double time) {
+    detail::checkTime("advanceTo", "time", time);
     detail::translated([&] { data_->crowd().advanceTo(time); });
 }
 
 CharacterState Crowd::stateAt(std::uint32_t character, double time) const {
+    detail::checkTime("stateAt", "time", time);
     if (character >= size())
         throw Error(ErrorCode::InvalidArgument, "no character " + std::to_string(character) + " in a crowd of " +
                                                     std::to_string(size()));
@@ -234,6 +256,7 @@ std::uint64_t Crowd::paletteJoints() const {
 }
 
 void Crowd::computePalettes(double time, std::vector<float>& rows, bool allCores) const {
+    detail::checkTime("computePalettes", "time", time);
     detail::translated([&] {
         const crowd::Crowd& crowd = data_->crowd();
         std::vector<std::uint32_t> offsets(crowd.size());
@@ -252,6 +275,7 @@ void Crowd::computePalettes(double time, std::vector<float>& rows, bool allCores
 }
 
 void Crowd::jointWorld(std::uint32_t character, std::uint32_t joint, double time, float out[12]) const {
+    detail::checkTime("jointWorld", "time", time);
     detail::translated([&] {
         const gpu::BoneRows rows = data_->crowd().jointWorld(character, joint, time);
         static_assert(sizeof(gpu::BoneRows) == 12 * sizeof(float));
@@ -261,15 +285,26 @@ void Crowd::jointWorld(std::uint32_t character, std::uint32_t joint, double time
 
 void Crowd::events(const std::uint32_t* characters, std::size_t count, double from, double to,
                    std::vector<Event>& out) const {
-    detail::translated([&] {
-        if (count > 0 && characters == nullptr) throw Error(ErrorCode::InvalidArgument, "events: no character list");
-        if (!(to >= from)) throw Error(ErrorCode::InvalidArgument, "events: the window ends before it starts");
+    events(characters, count, from, to, out, SIZE_MAX);
+}
+
+std::uint64_t Crowd::events(const std::uint32_t* characters, std::size_t count, double from, double to,
+                            std::vector<Event>& out, std::size_t capacity) const {
+    detail::checkEventWindow(characters, count, from, to);
+    out.clear();
+    return detail::translated([&] {
+        // This thread's scratch: a host asking every frame allocates nothing once warm, and a rare
+        // large list does not keep its memory after the call, thrown or not.
         thread_local std::vector<crowd::FiredEvent> fired;
+        const ScratchRelease release{fired};
         fired.clear();
-        data_->crowd().events({characters, count}, from, to, fired);
-        out.clear();
-        out.reserve(fired.size());
-        for (const crowd::FiredEvent& e : fired) out.push_back({e.character, e.clip, e.event, e.time});
+        crowd::EventSink sink{capacity > 0 ? &fired : nullptr, capacity};
+        data_->crowd().events({characters, count}, from, to, sink);
+        if (sink.count <= capacity) {
+            out.reserve(fired.size());
+            for (const crowd::FiredEvent& e : fired) out.push_back({e.character, e.clip, e.event, e.time});
+        }
+        return sink.count;
     });
 }
 

@@ -109,14 +109,47 @@ gpu::BorrowedHandles checkBorrowedDevice(const Device& device) {
     return handles;
 }
 
+namespace {
+
+// Whether `format` is a format of Vulkan 1.3's core (which the library asks for; it enables no format
+// extension). Any other value would reach the driver's format query as an invalid enum first.
+bool coreFormat(VkFormat format) {
+    const auto v = static_cast<std::int64_t>(format);
+    auto within = [v](std::int64_t first, std::int64_t last) { return v >= first && v <= last; };
+    return within(VK_FORMAT_R4G4_UNORM_PACK8, VK_FORMAT_ASTC_12x12_SRGB_BLOCK) ||
+           within(VK_FORMAT_G8B8G8R8_422_UNORM, VK_FORMAT_G16_B16_R16_3PLANE_444_UNORM) ||
+           within(VK_FORMAT_G8_B8R8_2PLANE_444_UNORM, VK_FORMAT_G16_B16R16_2PLANE_444_UNORM) ||
+           within(VK_FORMAT_A4R4G4B4_UNORM_PACK16, VK_FORMAT_A4B4G4R4_UNORM_PACK16) ||
+           within(VK_FORMAT_ASTC_4x4_SFLOAT_BLOCK, VK_FORMAT_ASTC_12x12_SFLOAT_BLOCK);
+}
+
+// S8_UINT is a depth-stencil attachment format with no depth.
+bool hasDepth(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_D16_UNORM: case VK_FORMAT_X8_D24_UNORM_PACK32: case VK_FORMAT_D32_SFLOAT:
+        case VK_FORMAT_D16_UNORM_S8_UINT: case VK_FORMAT_D24_UNORM_S8_UINT: case VK_FORMAT_D32_SFLOAT_S8_UINT:
+            return true;
+        default: return false;
+    }
+}
+
+}  // namespace
+
 void checkTargetFormat(VkPhysicalDevice physicalDevice, const TargetFormat& target) {
+    // The values first (a C host may pass any integer), then what the device does with them.
+    if (!coreFormat(target.color))
+        throw Error(ErrorCode::InvalidArgument, "target colour format " + std::to_string(target.color) +
+                                                    " is not a Vulkan 1.3 format");
+    if (!coreFormat(target.depth))
+        throw Error(ErrorCode::InvalidArgument, "target depth format " + std::to_string(target.depth) +
+                                                    " is not a Vulkan 1.3 format");
     VkFormatProperties colour, depth;
     vkGetPhysicalDeviceFormatProperties(physicalDevice, target.color, &colour);
     vkGetPhysicalDeviceFormatProperties(physicalDevice, target.depth, &depth);
     if (!(colour.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT))
         throw Error(ErrorCode::Unsupported, "target colour format " + std::to_string(target.color) +
                                                 " cannot be rendered to on this device");
-    if (!(depth.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
+    if (!hasDepth(target.depth) || !(depth.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
         throw Error(ErrorCode::Unsupported, "target depth format " + std::to_string(target.depth) +
                                                 " is not a depth format this device renders to");
     VkPhysicalDeviceProperties properties;

@@ -1,6 +1,7 @@
 // crowdgpu::Renderer over frame::CrowdRecorder on a borrowed device.
 #include "crowdgpu/renderer.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 
@@ -8,7 +9,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "api/api_data.h"
+#include "api/crowd_arguments.h"
 #include "api/device_requirements.h"
+#include "api/renderer_arguments.h"
 #include "api/renderer_data.h"
 #include "frame/memory_plan.h"
 #include "gpu/buffer.h"
@@ -87,6 +90,9 @@ void checkShadowCascades(std::uint32_t count, std::uint32_t mapSize) {
 }
 
 frame::RecorderOptions rendererOptions(const RendererSettings& s) {
+    checkSettingEnums(s);
+    if (!std::isfinite(s.lodThresholds[0]) || !std::isfinite(s.impostorThreshold) || !(s.impostorThreshold > 0.0f))
+        throw Error(ErrorCode::InvalidArgument, "LOD and impostor thresholds must be finite numbers of pixels above 0");
     if (!(s.lodThresholds[0] > s.lodThresholds[1] && s.lodThresholds[1] > 0.0f))
         throw Error(ErrorCode::InvalidArgument, "LOD thresholds must fall: lodThresholds[0] > lodThresholds[1] > 0");
     if (s.impostors && !(s.impostorThreshold > 0.0f && s.impostorThreshold < s.lodThresholds[1]))
@@ -158,6 +164,7 @@ FrameView lookAt(const float eye[3], const float target[3], float verticalFov, f
 }
 
 std::uint64_t memoryNeeded(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {
+    detail::checkPhysicalDeviceGiven("memoryNeeded", physicalDevice);
     return detail::translated([&] {
         const gpu::VulkanContext limits(gpu::BorrowedHandles{VK_NULL_HANDLE, physicalDevice, VK_NULL_HANDLE, 0, true});
         return frame::planMemory(limits, crowd.data().crowd(), detail::rendererOptions(settings)).total();
@@ -173,6 +180,7 @@ const char* cullingName(Culling culling) { return render::cullModeName(detail::c
 const char* shadowRasterName(ShadowRaster raster) { return raster == ShadowRaster::Compute ? "compute" : "hardware"; }
 
 DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd& crowd, const RendererSettings& settings) {
+    detail::checkPhysicalDeviceGiven("checkDeviceLimits", physicalDevice);
     return detail::translated([&] {
         VkPhysicalDeviceProperties properties;
         vkGetPhysicalDeviceProperties(physicalDevice, &properties);
@@ -192,6 +200,7 @@ DeviceLimitCheck checkDeviceLimits(VkPhysicalDevice physicalDevice, const Crowd&
 }
 
 std::string viewportProblem(VkPhysicalDevice physicalDevice, const RendererSettings& settings, VkExtent2D extent) {
+    detail::checkPhysicalDeviceGiven("viewportProblem", physicalDevice);
     return detail::translated([&] {
         VkPhysicalDeviceProperties properties;
         vkGetPhysicalDeviceProperties(physicalDevice, &properties);
@@ -266,11 +275,13 @@ void Renderer::recordSetup(VkCommandBuffer cmd) {
 void Renderer::setupCompleted() { data_->frame->setupCompleted(); }
 
 void Renderer::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view, const Crowd& crowd) {
+    detail::checkTime("recordCompute", "view.time", view.time);
     detail::translated([&] { data_->frame->recordCompute(cmd, slot, internalView(view), crowd.data().crowd()); });
 }
 
 void Renderer::recordCompute(VkCommandBuffer cmd, std::uint32_t slot, const FrameView& view, const Crowd& crowd,
                              const DeviceSamples& samples) {
+    detail::checkTime("recordCompute", "view.time", view.time);
     const render::DeviceSampleInput input{samples.buffer, samples.offset, samples.size};
     detail::translated([&] { data_->frame->recordCompute(cmd, slot, internalView(view), crowd.data().crowd(), &input); });
 }
@@ -343,6 +354,7 @@ std::uint64_t Renderer::framesLost() const { return data_->frame->framesLost(); 
 void Renderer::setPassObserver(PassObserver observer) { data_->frame->setPassObserver(std::move(observer)); }
 
 void Renderer::setMethod(Method method) {
+    detail::checkMethod("setMethod", method);
     detail::translated([&] {
         data_->frame->setMethod(detail::internalMethod(method));
         data_->settings.method = method;
@@ -362,6 +374,7 @@ void Renderer::setShadowLod(bool on) {
 }
 
 void Renderer::setShadowRaster(ShadowRaster raster) {
+    detail::checkShadowRaster("setShadowRaster", raster);
     detail::translated([&] { data_->frame->setShadowRaster(detail::internalShadowRaster(raster)); });
     data_->settings.shadowRaster = raster;
 }
@@ -397,6 +410,7 @@ void Renderer::setGround(bool on) {
 }
 
 void Renderer::setCulling(Culling culling, bool lod) {
+    detail::checkCulling("setCulling", culling);
     RendererSettings s = data_->settings;
     s.culling = culling;
     s.lod = lod;
@@ -412,6 +426,7 @@ void Renderer::setImpostors(bool on) {
 }
 
 void Renderer::setAnimation(Animation animation) {
+    detail::checkAnimation("setAnimation", animation);
     // The CPU path needs a bone block per character: the bones may be reallocated, or refused.
     detail::translated([&] {
         data_->frame->setAnimation(animation == Animation::Cpu ? render::AnimationPath::Cpu

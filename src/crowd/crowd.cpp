@@ -156,9 +156,9 @@ std::uint64_t layoutKeyOf(const std::vector<const model::SkinnedModel*>& models,
 Crowd::Crowd(std::vector<const model::SkinnedModel*> models, std::vector<Character> characters,
              const BehaviourSettings& behaviour, const Capacity& capacity)
     : models_(std::move(models)),
-      behaviour_(behaviour),
       population_({}, 0, 0),
-      id_(nextCrowdId()) {
+      id_(nextCrowdId()),
+      behaviour_(behaviour) {
     if (models_.empty() || models_.size() > MAX_MODELS)
         throw gpu::Error("a crowd holds 1 to " + std::to_string(MAX_MODELS) + " models, not " +
                          std::to_string(models_.size()));
@@ -894,8 +894,7 @@ anim::Affine Crowd::jointWorld(std::uint32_t index, std::uint32_t joint, double 
     return world[joint];
 }
 
-void Crowd::events(std::span<const std::uint32_t> characters, double from, double to,
-                   std::vector<FiredEvent>& out) const {
+void Crowd::events(std::span<const std::uint32_t> characters, double from, double to, EventSink& out) const {
     for (const std::uint32_t c : characters) {
         checkCharacter(c);
         if (!(from >= knownFrom_[c]))
@@ -910,7 +909,14 @@ void Crowd::events(std::span<const std::uint32_t> characters, double from, doubl
             if (keys_.oldest(c) > 0 && from < oldest)
                 throw gpu::Error("character " + std::to_string(c) + ": events from " + std::to_string(from) +
                                  " s asked, but its oldest key kept is drawn at " + std::to_string(oldest) + " s");
-            drivenEvents(keys_, c, *models_[model], library_, model, drivenModels_[model], timing_, since, to, out);
+            // One character's events at a time, in time order, into the sink (kept while it has room).
+            thread_local std::vector<FiredEvent> fired;
+            fired.clear();
+            drivenEvents(keys_, c, *models_[model], library_, model, drivenModels_[model], timing_, since, to, fired);
+            for (const FiredEvent& event : fired) {
+                if (out.kept && out.count < out.room) out.kept->push_back(event);
+                ++out.count;
+            }
             continue;
         }
         forEachKnownSegment(c, [&](const Segment& segment, double begin, double end) {

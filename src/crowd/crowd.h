@@ -294,7 +294,11 @@ public:
     // appended to `out`: by character in the order given, each in time order. The window must lie
     // within what the crowd knows (from >= knownFrom(c)); times after the last advanceTo follow the
     // current plans. Throws gpu::Error for a character that does not exist or a window it forgot.
-    void events(std::span<const std::uint32_t> characters, double from, double to, std::vector<FiredEvent>& out) const;
+    void events(std::span<const std::uint32_t> characters, double from, double to, EventSink& out) const;
+    void events(std::span<const std::uint32_t> characters, double from, double to, std::vector<FiredEvent>& out) const {
+        EventSink sink{&out};
+        events(characters, from, to, sink);
+    }
 
     // Centre and radius of the ground the living characters stand on (and may walk over), and the
     // tallest of them (a crowd with nobody: its first model's height). Measured again (over every slot)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "crowd/event_pairs.h"
+#include "gpu/error.h"
 
 namespace crowd {
 namespace {
@@ -56,7 +57,7 @@ struct PhaseCurve {
 
 void segmentEvents(const Segment& segment, const model::SkinnedModel& model, const anim::ClipLibrary& library,
                    std::uint32_t modelIndex, std::uint32_t character, double begin, double end, double from,
-                   double to, std::vector<FiredEvent>& out) {
+                   double to, EventSink& out) {
     const double lo = std::max(from, begin), hi = std::min(to, end);
     if (!(hi >= lo) || model.clips.empty()) return;
     const gpu::MotionRecord& m = segment.motion;
@@ -64,7 +65,12 @@ void segmentEvents(const Segment& segment, const model::SkinnedModel& model, con
                            m.timing.y};
     const double first = curve.at(std::max(lo - segment.start, 0.0)), last = curve.at(std::max(hi - segment.start, 0.0));
     const std::uint32_t clipFrom = m.clips.x, clipTo = m.clips.y;
-    const std::size_t mark = out.size();
+    const std::size_t mark = out.kept ? out.kept->size() : 0;
+    // Kept while there is room; counted always.
+    auto fire = [&](const FiredEvent& event) {
+        if (out.kept && out.count < out.room) out.kept->push_back(event);
+        ++out.count;
+    };
     // Pairs need a crossfade of two clips that both have events and a length (a clip of none fires
     // nothing); most fades (to and from a standing clip with no events) skip the search.
     const float fromDuration = library.duration(modelIndex, clipFrom);
@@ -93,7 +99,14 @@ void segmentEvents(const Segment& segment, const model::SkinnedModel& model, con
             // lies between 0 and blend.drift), one more either side for rounding: the times decide.
             const double kFirst = std::floor(first - std::max(blend.drift, 0.0) - blend.base) - 1.0;
             const double kLast = std::ceil(last - std::min(blend.drift, 0.0) - blend.base) + 1.0;
-            for (double k = kFirst; k <= kLast; k += 1.0) {
+            // Counted in integers: past 2^53 cycles k + 1 == k, and a double loop would never end.
+            if (!(kLast - kFirst <= kMostCyclesInWindow))
+                throw gpu::Error("character " + std::to_string(character) + ": its clip " + std::to_string(clip) +
+                                 " loops more than " + std::to_string(static_cast<long>(kMostCyclesInWindow)) +
+                                 " times in the window (ask for shorter windows)");
+            const auto cycles = static_cast<std::int64_t>(kLast - kFirst);
+            for (std::int64_t n = 0; n <= cycles; ++n) {
+                const double k = kFirst + static_cast<double>(n);
                 const double elapsed = curve.when(blend.base + k, blend.drift);
                 if (elapsed < 0.0) continue;
                 const double t = segment.start + elapsed;
@@ -101,16 +114,17 @@ void segmentEvents(const Segment& segment, const model::SkinnedModel& model, con
                 const bool toWins = !(curve.fade > 0.0) || elapsed >= 0.5 * curve.fade;
                 if (partner >= 0) {
                     // The pair is reported as the event of the clip that weighs more then.
-                    out.push_back(toWins ? FiredEvent{character, clipTo, e, t}
-                                         : FiredEvent{character, clipFrom, static_cast<std::uint32_t>(partner), t});
+                    fire(toWins ? FiredEvent{character, clipTo, e, t}
+                                : FiredEvent{character, clipFrom, static_cast<std::uint32_t>(partner), t});
                     continue;
                 }
                 if (clipFrom != clipTo && (clip == clipTo) != toWins) continue;
-                out.push_back({character, clip, e, t});
+                fire({character, clip, e, t});
             }
         }
     }
-    std::sort(out.begin() + static_cast<std::ptrdiff_t>(mark), out.end(),
+    if (!out.kept) return;
+    std::sort(out.kept->begin() + static_cast<std::ptrdiff_t>(mark), out.kept->end(),
               [](const FiredEvent& a, const FiredEvent& b) { return a.time < b.time || (a.time == b.time && a.event < b.event); });
 }
 

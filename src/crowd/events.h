@@ -25,11 +25,25 @@ struct FiredEvent {
     double time = 0.0;        // scene seconds
 };
 
-// Appends to `out` the events `character` fires while following `segment` (of `model`, the library's
+// Where fired events go: every one is counted, and the first `room` are appended to `kept` (none without
+// it), so a count costs no storage and a list no more than the caller allows. When more fire than
+// there is room for, which of them were kept is unspecified: callers refuse such a list.
+struct EventSink {
+    std::vector<FiredEvent>* kept = nullptr;
+    std::uint64_t room = UINT64_MAX;
+    std::uint64_t count = 0;
+};
+
+// The most cycles of one clip a window may cover for one character's segment (about 10 ms of work per
+// event of the clip): beyond it segmentEvents throws gpu::Error rather than run on (a clip of a
+// millisecond played fast over a long window).
+inline constexpr double kMostCyclesInWindow = 1e6;
+
+// Adds to `out` the events `character` fires while following `segment` (of `model`, the library's
 // model `modelIndex`) at times t with from < t <= to and begin <= t < end (the part of the scene clock
-// the segment covers). In time order.
+// the segment covers). Kept in time order.
 void segmentEvents(const Segment& segment, const model::SkinnedModel& model, const anim::ClipLibrary& library,
                    std::uint32_t modelIndex, std::uint32_t character, double begin, double end, double from,
-                   double to, std::vector<FiredEvent>& out);
+                   double to, EventSink& out);
 
 }  // namespace crowd

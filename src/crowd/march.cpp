@@ -117,10 +117,12 @@ Segment enterMarchCycle(Agent& agent, std::uint32_t cycle, const PlanContext& co
 
 std::uint32_t marchCycleAt(double time, const PlanContext& context) {
     const double guess = std::floor((time - kPrologue) / context.rhythm.marchCycle);
-    auto cycle = static_cast<std::uint32_t>(std::clamp(guess, 0.0, 4.0e9));
+    // Clamped (a NaN guess to 0) before it becomes an index, and the walk below stops at the last one.
+    constexpr std::uint32_t kLast = 4000000000u;
+    auto cycle = static_cast<std::uint32_t>(guess > 0.0 ? std::min(guess, static_cast<double>(kLast)) : 0.0);
     // The division may round across a boundary: settle on the cycle whose start is at or before `time`.
     while (cycle > 0 && cycleStart(cycle, context) > time) --cycle;
-    while (cycleStart(cycle + 1, context) <= time) ++cycle;
+    while (cycle < kLast && cycleStart(cycle + 1, context) <= time) ++cycle;
     return cycle;
 }
 

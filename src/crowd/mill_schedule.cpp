@@ -29,10 +29,12 @@ double millEpisodeStart(std::uint32_t episode, const PlanContext& context) {
 
 std::uint32_t millEpisodeAt(double time, const PlanContext& context) {
     const double guess = std::floor(time / context.rhythm.millEpisode - offsetOf(context));
-    auto episode = static_cast<std::uint32_t>(std::clamp(guess, 0.0, 4.0e9));
+    // Clamped (a NaN guess to 0) before it becomes an index, and the walk below stops at the last one.
+    constexpr std::uint32_t kLast = 4000000000u;
+    auto episode = static_cast<std::uint32_t>(guess > 0.0 ? std::min(guess, static_cast<double>(kLast)) : 0.0);
     // The division may round across a boundary: settle on the episode whose start is at or before `time`.
     while (episode > 0 && millEpisodeStart(episode, context) > time) --episode;
-    while (millEpisodeStart(episode + 1, context) <= time) ++episode;
+    while (episode < kLast && millEpisodeStart(episode + 1, context) <= time) ++episode;
     return episode;
 }
 

@@ -7,7 +7,12 @@
 
 namespace crowd {
 
-std::int64_t WakeCalendar::bucketOf(double wake) { return static_cast<std::int64_t>(std::floor(wake / kBucketSeconds)); }
+std::int64_t WakeCalendar::bucketOf(double wake) {
+    // Clamped before the conversion, which is undefined past int64 (a wake of 1e300 s) or for NaN.
+    constexpr double kFarthest = 4.0e18;
+    const double bucket = std::floor(wake / kBucketSeconds);
+    return static_cast<std::int64_t>(bucket > -kFarthest ? std::min(bucket, kFarthest) : -kFarthest);
+}
 
 void WakeCalendar::file(std::uint32_t character, double wake) {
     if (wake == kNever) return;

@@ -310,6 +310,42 @@ std::size_t unanimatedChannels(const json& document) {
     return count;
 }
 
+// Each animation's "extras.events" (docs/events.md), which the loader reads (gltf_animation.cpp): its
+// types are checked here, on the JSON as written, because tinygltf drops null, [] and {} from extras, so
+// "events": null, or an event that is null or {}, would vanish before the loader sees it. Anything else
+// in extras, and extras that are not an object, are the file's own business. What the values mean (a
+// time within the clip, a joint of the skeleton) the loader checks.
+void checkClipEvents(const json& document) {
+    const auto animations = document.find("animations");
+    if (animations == document.end()) return;
+    // The checker has made sure "animations" is an array of objects.
+    for (std::size_t a = 0; a < animations->size(); ++a) {
+        const json& animation = (*animations)[a];
+        const auto extras = animation.find("extras");
+        if (extras == animation.end() || !extras->is_object()) continue;
+        const auto events = extras->find("events");
+        if (events == extras->end()) continue;
+        const std::string field = "animations[" + std::to_string(a) + "].extras.events";
+        if (!events->is_array())
+            fail(field + ": expected an array of {\"name\": string, \"time\": seconds}, found " + found(*events));
+        for (std::size_t e = 0; e < events->size(); ++e) {
+            const json& event = (*events)[e];
+            const std::string at = field + "[" + std::to_string(e) + "]";
+            if (!event.is_object())
+                fail(at + ": expected an object {\"name\": string, \"time\": seconds}, found " + found(event));
+            const auto name = event.find("name");
+            if (name == event.end() || !name->is_string() || name->get<std::string>().empty())
+                fail(at + ".name: expected a non-empty string, found " + (name == event.end() ? "none" : found(*name)));
+            const auto time = event.find("time");
+            if (time == event.end() || !time->is_number())
+                fail(at + ".time: expected a number of seconds, found " + (time == event.end() ? "none" : found(*time)));
+            const auto joint = event.find("joint");
+            if (joint != event.end() && !joint->is_string())
+                fail(at + ".joint: expected the name of a joint (a string), found " + found(*joint));
+        }
+    }
+}
+
 }  // namespace
 
 void checkJsonTypes(std::span<const std::uint8_t> text, std::vector<std::string>& notes) {
@@ -322,6 +358,7 @@ void checkJsonTypes(std::span<const std::uint8_t> text, std::vector<std::string>
     if (!document.is_object()) fail("not a valid glTF file: the JSON is not an object");
     Checker checker;
     checker.check(document, kDocumentShape, "", Use::Read);
+    checkClipEvents(document);
     checker.addNote(notes);
     if (const std::size_t channels = unanimatedChannels(document); channels > 0)
         notes.push_back(std::to_string(channels) + " animation channel(s) without a target node ignored");

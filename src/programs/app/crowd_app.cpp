@@ -197,6 +197,34 @@ static void checkViewport(const HostDevice& device, const crowdgpu::RendererSett
     throw Error("--size " + std::to_string(size.width) + "x" + std::to_string(size.height) + ": " + problem);
 }
 
+FittingSize largestFittingSize(const HostDevice& device, const crowdgpu::Crowd& crowd,
+                               const crowdgpu::RendererSettings& settings, VkExtent2D wanted) {
+    auto scaled = [&](double scale) {
+        return VkExtent2D{std::max(1u, static_cast<std::uint32_t>(wanted.width * scale)),
+                          std::max(1u, static_cast<std::uint32_t>(wanted.height * scale))};
+    };
+    auto problem = [&](VkExtent2D size) -> std::string {
+        const std::uint64_t needed = estimateCrowdBytes(device, crowd, settings, size);
+        if (needed > device.deviceLocalBytes())
+            return "it needs " + std::to_string(needed >> 20) + " MiB of device memory, " + device.description.name +
+                   " has " + std::to_string(device.deviceLocalBytes() >> 20) + " MiB";
+        if (std::string limit = RenderTarget::limitProblem(device, size, settings.target, settings.edgeFilter); !limit.empty())
+            return limit;
+        return crowdgpu::viewportProblem(device.physicalDevice, settings, size);
+    };
+    FittingSize result{wanted, problem(wanted)};
+    if (result.why.empty()) return result;
+    // Every limit grows with the size, so the largest scale that fits is found by halving the interval
+    // (to under a pixel of the longer side in 2^-20).
+    double fitting = 0.0, failing = 1.0;
+    for (int step = 0; step < 20; ++step) {
+        const double middle = 0.5 * (fitting + failing);
+        (problem(scaled(middle)).empty() ? fitting : failing) = middle;
+    }
+    result.size = scaled(fitting);
+    return result;
+}
+
 void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, const crowdgpu::RendererSettings& settings,
                     VkExtent2D size) {
     checkAntiAliasing(device, settings.target.samples);

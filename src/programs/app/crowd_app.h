@@ -64,6 +64,16 @@ std::uint64_t estimateCrowdBytes(const HostDevice& device, const crowdgpu::Crowd
 // sample count (--aa), the run cannot fit in the device's memory, or a buffer the crowd binds whole as a storage buffer is over the device's range.
 void checkCrowdFits(const HostDevice& device, const crowdgpu::Crowd& crowd, const crowdgpu::RendererSettings& settings,
                     VkExtent2D size);
+// The largest image size at most `wanted`, of its shape, that the crowd can be drawn into on this device:
+// within its memory (estimateCrowdBytes), the limits of every image of the target
+// (RenderTarget::limitProblem) and of what recordCompute draws (crowdgpu::viewportProblem). `wanted`
+// when it fits; a window of any size is then drawn at this size and scaled to the window (crowd-view).
+struct FittingSize {
+    VkExtent2D size;
+    std::string why;  // what `wanted` is past, in one line (empty when it fits)
+};
+FittingSize largestFittingSize(const HostDevice& device, const crowdgpu::Crowd& crowd,
+                               const crowdgpu::RendererSettings& settings, VkExtent2D wanted);
 
 // Animation time of frame `index`: a fixed 60 Hz step from `start` seconds, so runs are reproducible.
 inline double frameTime(std::uint32_t index, double start = 0.0) { return start + static_cast<double>(index) / 60.0; }

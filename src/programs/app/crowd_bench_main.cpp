@@ -79,7 +79,7 @@ usage: crowd-bench [options]
   --csv FILE           every figure as CSV
   --json FILE          every figure as JSON
   --frame-log FILE     every measured frame as a CSV row (wall clock, GPU passes, CPU, counts): where a
-                       p95 comes from, frame by frame along the camera path
+                       p95 comes from, frame by frame along the camera path (not with --palette)
   --device INDEX|NAME  Vulkan device (see crowd-render --list-devices)
   --seed N             crowd layout seed (default 1)
   --threads N          CPU threads that planning and CPU animation share, this one included; 0: one
@@ -190,6 +190,10 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
         if (!framesGiven) o.scene.frames = 5;
         if (!warmupGiven) o.warmup = 2;
     }
+    // --palette times bone palettes, not frames: it has no frame to log, and writing no file while
+    // exiting 0 would look like success.
+    if (o.palette && !o.frameLog.empty())
+        throw app::Error("--frame-log: --palette measures bone palettes, not frames; there is no frame log to write");
     if (o.palette && !countsGiven) o.counts = {1024, 4096, 16384, 65536, 262144, 1000000};
     if (o.palette && !framesGiven && !quick) o.scene.frames = 10;
     if (o.palette && !warmupGiven && !quick) o.warmup = 3;

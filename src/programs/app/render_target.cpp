@@ -1,11 +1,36 @@
 #include "app/render_target.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "app/error.h"
 #include "app/host_device.h"
 
 namespace app {
+
+std::vector<RenderTarget::Image> RenderTarget::images(const crowdgpu::TargetFormat& format, bool edgeFilter) {
+    std::vector<Image> list;
+    if (edgeFilter) {
+        // The filter writes the picture through a UNORM view (sRGB is no storage format).
+        list.push_back({&RenderTarget::color_, format.color, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                        VK_SAMPLE_COUNT_1_BIT, VK_FORMAT_R8G8B8A8_UNORM, "scene colour"});
+        list.push_back({&RenderTarget::drawn_, format.color,
+                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, VK_SAMPLE_COUNT_1_BIT,
+                        VK_FORMAT_UNDEFINED, "scene colour drawn"});
+    } else {
+        list.push_back({&RenderTarget::color_, format.color,
+                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_SAMPLE_COUNT_1_BIT,
+                        VK_FORMAT_UNDEFINED, "scene colour"});
+    }
+    // The samples live only within the pass (resolved at its end): transient, never copied.
+    if (format.samples != VK_SAMPLE_COUNT_1_BIT)
+        list.push_back({&RenderTarget::multisampled_, format.color,
+                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT, format.samples,
+                        VK_FORMAT_UNDEFINED, "scene colour samples"});
+    list.push_back({&RenderTarget::depth_, format.depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, format.samples,
+                    VK_FORMAT_UNDEFINED, "scene depth"});
+    return list;
+}
 
 RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format,
                            bool edgeFilter)
@@ -14,27 +39,43 @@ RenderTarget::RenderTarget(const HostDevice& device, VkExtent2D extent, const cr
         throw Error("the edge filter writes R8G8B8A8 pictures only (the target's colour format is " +
                     std::to_string(format.color) + ")");
     try {
-        if (edgeFilter) {
-            // The filter writes the picture through a UNORM view (sRGB is no storage format).
-            color_ = createImage(device, extent, format.color, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                 "scene colour", VK_SAMPLE_COUNT_1_BIT, VK_FORMAT_R8G8B8A8_UNORM);
-            drawn_ = createImage(device, extent, format.color,
-                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "scene colour drawn");
-        } else {
-            color_ = createImage(device, extent, format.color,
-                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "scene colour");
-        }
-        // The samples live only within the pass (resolved at its end): transient, never copied.
-        if (samples_ != VK_SAMPLE_COUNT_1_BIT)
-            multisampled_ = createImage(device, extent, format.color,
-                                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                                        "scene colour samples", samples_);
-        depth_ = createImage(device, extent, format.depth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "scene depth",
-                             samples_);
+        for (const Image& image : images(format, edgeFilter))
+            this->*image.member =
+                createImage(device, extent, image.format, image.usage, image.what, image.samples, image.viewFormat);
     } catch (...) {
         release();
         throw;
     }
+}
+
+std::string RenderTarget::limitProblem(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format,
+                                       bool edgeFilter) {
+    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &maintenance3};
+    vkGetPhysicalDeviceProperties2(device.physicalDevice, &properties);
+    const std::string size = std::to_string(extent.width) + "x" + std::to_string(extent.height);
+    for (const Image& image : images(format, edgeFilter)) {
+        VkImageFormatProperties limits{};
+        const VkImageCreateFlags flags = image.viewFormat != VK_FORMAT_UNDEFINED
+                                             ? VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT | VK_IMAGE_CREATE_EXTENDED_USAGE_BIT
+                                             : 0u;
+        if (vkGetPhysicalDeviceImageFormatProperties(device.physicalDevice, image.format, VK_IMAGE_TYPE_2D,
+                                                     VK_IMAGE_TILING_OPTIMAL, image.usage, flags,
+                                                     &limits) != VK_SUCCESS ||
+            !(limits.sampleCounts & image.samples))
+            return std::string(image.what) + ": the device cannot make this image";
+        if (extent.width > limits.maxExtent.width || extent.height > limits.maxExtent.height)
+            return std::string(image.what) + ": " + size + " is past the device's largest image, " +
+                   std::to_string(limits.maxExtent.width) + "x" + std::to_string(limits.maxExtent.height);
+        // Every target format is 4 bytes a texel (the readback copies 4 bytes a pixel; D32 depth).
+        const std::uint64_t bytes = std::uint64_t{extent.width} * extent.height * 4u * image.samples;
+        const std::uint64_t largest = std::min<std::uint64_t>(limits.maxResourceSize, maintenance3.maxMemoryAllocationSize);
+        if (bytes > largest)
+            return std::string(image.what) + ": " + size + " at " + std::to_string(image.samples) +
+                   " sample(s) a pixel is " + std::to_string(bytes >> 20) + " MiB, past the device's largest image of " +
+                   std::to_string(largest >> 20) + " MiB";
+    }
+    return {};
 }
 
 RenderTarget::~RenderTarget() { release(); }

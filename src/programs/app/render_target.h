@@ -5,6 +5,9 @@
 // or presented; without multisampling it draws into that image directly. With the library's edge
 // filter (--aa fxaa), the pass draws (or resolves) into an image of its own, which the filter reads
 // and writes anti-aliased into the picture through a UNORM storage view.
+#include <string>
+#include <vector>
+
 #include <crowdgpu/renderer.hpp>
 #include <vulkan/vulkan.h>
 
@@ -55,8 +58,23 @@ public:
     // Copies the last rendered frame to the host (waits for the GPU).
     Rgba8Image readback();
     VkDeviceSize bytes() const { return color_.bytes + drawn_.bytes + multisampled_.bytes + depth_.bytes; }
+    // Why the device cannot make a target of this size, in one line naming the image and the limit
+    // past which it lies (the format's largest extent and maxResourceSize for its usage and samples,
+    // maxMemoryAllocationSize); empty when it can. Memory as a whole is the caller's (renderTargetBytes).
+    static std::string limitProblem(const HostDevice& device, VkExtent2D extent, const crowdgpu::TargetFormat& format,
+                                    bool edgeFilter);
 
 private:
+    // One image of the target: the constructor makes these, limitProblem checks them.
+    struct Image {
+        HostImage RenderTarget::*member;
+        VkFormat format;
+        VkImageUsageFlags usage;
+        VkSampleCountFlagBits samples;
+        VkFormat viewFormat;  // another format for its view, or UNDEFINED
+        const char* what;
+    };
+    static std::vector<Image> images(const crowdgpu::TargetFormat& format, bool edgeFilter);
     void release();
 
     const HostDevice& device_;

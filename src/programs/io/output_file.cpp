@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/error.h"
+#include "io/standard_output.h"
 
 namespace io {
 namespace {
@@ -106,7 +107,10 @@ int writeAll(int fd, std::span<const std::uint8_t> bytes) {
 void writeToStream(const std::filesystem::path& path, int fd, std::span<const std::uint8_t> bytes) {
     std::fflush(fd == STDOUT_FILENO ? stdout : stderr);
     const int error = writeAll(fd, bytes);
-    if (error != 0) fail(path, error);
+    if (error == 0) return;
+    // The line that names this file reports the stream's failure; the exit check says nothing more.
+    if (fd == STDOUT_FILENO) standardOutputFailureReported();
+    fail(path, error);
 }
 
 void writeInPlace(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {

@@ -10,12 +10,14 @@ namespace io {
 namespace {
 
 const char* programName = "";
+bool reported = false;
 
 void checkAtExit() {
     errno = 0;
     const bool flushed = std::fflush(stdout) == 0;
     const int error = errno;
     if (flushed && !std::ferror(stdout)) return;
+    if (reported) ::_exit(1);  // one failure, one line: it was said already
     std::fprintf(stderr, "%s: cannot write standard output: %s\n", programName,
                  error != 0 ? std::strerror(error) : "write error");
     // _exit: this runs inside exit(), which must not be called again.
@@ -23,6 +25,8 @@ void checkAtExit() {
 }
 
 }  // namespace
+
+void standardOutputFailureReported() { reported = true; }
 
 void failOnUnwrittenStandardOutput(const char* program) {
     programName = program;

@@ -87,6 +87,10 @@ std::uint32_t CrowdScene::maxCharacters(VkExtent2D size) const {
     return static_cast<std::uint32_t>(std::clamp(std::min(memoryLimit, rangeLimit), 1.0, static_cast<double>(app::kMaxCharacters)));
 }
 
+app::FittingSize CrowdScene::fittingSize(VkExtent2D window) const {
+    return app::largestFittingSize(context_, world_->crowd, renderer_->settings(), window);
+}
+
 app::CullOptions cullOf(const crowdgpu::RendererSettings& settings) {
     app::CullOptions cull;
     cull.mode = settings.culling;

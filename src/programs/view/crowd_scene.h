@@ -52,6 +52,10 @@ public:
     // The largest crowd of this model that fits the device's memory and storage-buffer range with this
     // method (the panel's limit).
     std::uint32_t maxCharacters(VkExtent2D size) const;
+    // The size to draw a window of `window` pixels at with the current settings: the window's own, or,
+    // past the device's memory or image limits (a huge window with multisampling), the largest of its
+    // shape that fits (app::largestFittingSize), with why.
+    app::FittingSize fittingSize(VkExtent2D window) const;
     // What loading the model or resolving the clip noted (glTF parts left out, a clip replaced).
     std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
 

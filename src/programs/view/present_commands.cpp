@@ -21,10 +21,13 @@ void blitScene(VkCommandBuffer cmd, VkImage scene, VkExtent2D sceneExtent, Swapc
     region.srcOffsets[1] = {static_cast<int32_t>(sceneExtent.width), static_cast<int32_t>(sceneExtent.height), 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstOffsets[1] = {static_cast<int32_t>(target.extent.width), static_cast<int32_t>(target.extent.height), 1};
-    // The renderer is resized with the swapchain, so the blit is 1:1 and nearest sampling copies
-    // each pixel; a blit rather than a copy because the channel order may differ (BGRA windows).
+    // The renderer is resized with the swapchain, so the blit is mostly 1:1 and nearest sampling copies
+    // each pixel; a blit rather than a copy because the channel order may differ (BGRA windows). A
+    // window past the device's limits is drawn smaller and scaled up, filtered (linear filtering of the
+    // scene's R8G8B8A8_SRGB is a format feature every Vulkan device has).
+    const bool oneToOne = sceneExtent.width == target.extent.width && sceneExtent.height == target.extent.height;
     vkCmdBlitImage(cmd, scene, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   1, &region, VK_FILTER_NEAREST);
+                   1, &region, oneToOne ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
 }
 
 void prepareForUi(VkCommandBuffer cmd, SwapchainImage& target) {

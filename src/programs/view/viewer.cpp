@@ -53,11 +53,12 @@ Viewer::Viewer(const ViewerOptions& options)
              options.render.meshCapacity, options.render.antiAliasing, swapchain_.extent()),
       markers_(context_, scene_.renderer().library().settings().framesInFlight) {
     window_.limitFramebufferSize(swapchain_.largestExtent());
-    scene_.setAnimation(options.render.animation, swapchain_.extent());
+    renderSize_ = swapchain_.extent();
+    scene_.setAnimation(options.render.animation, renderSize_);
     controls_.scenePath = options.render.camera != app::CameraPath::Framed;
     if (options.ui) ui_ = std::make_unique<UiPass>(context_, window_.handle(), swapchain_);
     frameHome(true);
-    maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
+    maxCharacters_ = scene_.maxCharacters(renderSize_);
     std::printf("crowd-view: %s (%s), %u x %s, %s, %ux%u, anti-aliasing %s, %s\n", context_.description.name.c_str(),
                 context_.description.driver.c_str(), scene_.crowd().size(), scene_.model().name().c_str(),
                 crowdgpu::methodName(scene_.method()), swapchain_.extent().width, swapchain_.extent().height,
@@ -181,9 +182,19 @@ void Viewer::recreateSwapchain(VkExtent2D size) {
         return;
     }
     if (ui_) ui_->onSwapchainRecreated(swapchain_);
-    scene_.renderer().resize(swapchain_.extent());
+    // A window past what the device can draw into with these settings (16384 x 16384 with 4 samples: a
+    // 4 GiB image) is drawn at the largest size of its shape that fits and scaled up to it.
+    const VkExtent2D window = swapchain_.extent();
+    const app::FittingSize fitting = scene_.fittingSize(window);
+    if (fitting.size != window)
+        note("the " + std::to_string(window.width) + "x" + std::to_string(window.height) + " window is drawn at " +
+             std::to_string(fitting.size.width) + "x" + std::to_string(fitting.size.height) +
+             " and scaled up (at its own size with anti-aliasing " +
+             app::antiAliasingName(options_.render.antiAliasing) + ", " + fitting.why + ")");
+    renderSize_ = fitting.size;
+    scene_.renderer().resize(renderSize_);
     frameHome(false);  // R frames the crowd for the new shape; the camera stays where it is
-    maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
+    maxCharacters_ = scene_.maxCharacters(renderSize_);
 }
 
 void Viewer::buildUi() {
@@ -234,12 +245,12 @@ void Viewer::apply(const PanelRequests& requests) {
     try {
         if (requests.gpuAnimation) {
             scene_.setAnimation(*requests.gpuAnimation ? crowdgpu::Animation::Gpu : crowdgpu::Animation::Cpu,
-                                swapchain_.extent());
-            maxCharacters_ = scene_.maxCharacters(swapchain_.extent());  // the CPU path's bones bound it sooner
+                                renderSize_);
+            maxCharacters_ = scene_.maxCharacters(renderSize_);  // the CPU path's bones bound it sooner
         }
         if (requests.method) {
-            scene_.setMethod(*requests.method, swapchain_.extent());
-            maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
+            scene_.setMethod(*requests.method, renderSize_);
+            maxCharacters_ = scene_.maxCharacters(renderSize_);
             history_.clear();
         }
         if (requests.characters || requests.model) {
@@ -254,11 +265,11 @@ void Viewer::apply(const PanelRequests& requests) {
 }
 
 void Viewer::rebuild(const app::SceneOptions& scene) {
-    scene_.rebuild(scene, swapchain_.extent());
+    scene_.rebuild(scene, renderSize_);
     markers_.clear();
     history_.clear();
     frameHome(true);
-    maxCharacters_ = scene_.maxCharacters(swapchain_.extent());
+    maxCharacters_ = scene_.maxCharacters(renderSize_);
     controls_.followed.reset();
     message_.clear();
     for (const std::string& n : scene_.takeNotes()) note(n);

@@ -72,6 +72,8 @@ private:
     PanelRequests requests_;  // this frame's, from the panel and the keys
     double sceneTime_ = 0.0;  // the time of the frame drawn last (the panel's recording slider)
     std::uint32_t maxCharacters_ = 1;
+    // What the scene is drawn at: the window's size, or less when that is past the device's limits.
+    VkExtent2D renderSize_{};
     bool swapchainStale_ = false;
     std::string message_;
     std::uint32_t screenshots_ = 0;
