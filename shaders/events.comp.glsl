@@ -28,7 +28,7 @@ layout(std430, set = 0, binding = 10) buffer Events {
     EventHeader header;
     EventRecord fired[];
 };
-layout(std430, set = 0, binding = 11) readonly buffer Terrain { float heights[]; };
+TERRAIN_BUFFER(0, 11);
 
 #include "motion.glsl.inc"
 
@@ -82,7 +82,7 @@ vec3 worldPlace(uint c, MotionRecord m, uint firstClip, float elapsed, vec3 mode
         position.xz += elapsed >= 0.0 ? travelled(m, elapsed, firstClip + m.clips.x, to)
                                       : turnToWorld(rootStep(to, m.phase.x, m.phase.x + m.phase.z * elapsed), m.origin.w);
     }
-    position.y += terrainHeightAt(push.terrain, position.xz);  // on the ground, as the motion pass places it
+    position.y += terrainHeightAt(terrainGrid, position.xz);  // on the ground, as the motion pass places it
     float heading = motionHeading(m, elapsed), scale = characters[c].tint.w;
     vec2 turned = turnToWorld(modelPlace.xz * scale, heading);
     return position + vec3(turned.x, modelPlace.y * scale, turned.y);

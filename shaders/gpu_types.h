@@ -59,9 +59,11 @@ using uint = std::uint32_t;
 #define MAX_MATERIALS 128
 
 // ---- Terrain (crowd/terrain.h, shaders/terrain_height.h) ----
-// The host's heightfield: heights on a grid over a rectangle of the ground, in a buffer of floats
-// (row-major: sample (column, row) at column + row x columns), bilinear between them, the edge's heights
-// beyond. Characters stand on it; the library's ground is drawn as it.
+// The host's heightfield: heights on a grid over a rectangle of the ground, bilinear between them, the
+// edge's heights beyond. Characters stand on it; the library's ground is drawn as it. On the GPU one
+// storage buffer holds the grid and then its heights (row-major: sample (column, row) at column + row x
+// columns): TERRAIN_BUFFER below. The grid is never a push constant or uniform: lavapipe (Mesa 22.3)
+// compiles a new copy of a shader that branches on uniform values at every bind and keeps it (CullUniforms).
 struct TerrainGrid {
     vec4 extent;  // x, y: world (x, z) of sample (0, 0); z, w: the grid's width and depth in metres (z = 0: no
                   // terrain, the ground is the plane y = 0)
@@ -72,6 +74,10 @@ struct TerrainGrid {
 // stride-th line so that at most GROUND_MOST_CELLS cells lie along a side, and a ring of cells reaching out
 // to the ground's edge.
 #define GROUND_MOST_CELLS 512u
+
+// The terrain's storage buffer as a shader declares it (render/terrain_buffer.h).
+#define TERRAIN_BUFFER(setIndex, bindingIndex) \
+    layout(std430, set = setIndex, binding = bindingIndex) readonly buffer Terrain { TerrainGrid terrainGrid; float heights[]; }
 
 // One bind-pose vertex as pass 1 (and the vertex-shader baseline) reads it.
 // normal.w holds the vertex's material index (a small integer stored exactly as a float).
@@ -460,7 +466,6 @@ struct MotionPush {
     vec4 time;     // x: the frame's time in seconds since the crowd's epoch (crowd/epoch.h), y: the driven
                    // characters' clock (x less the delay: crowd::Crowd::drivenClock), z: their extrapolation
                    // (s), w: the epoch's index
-    TerrainGrid terrain;  // the ground characters stand on (motion pass)
 };
 
 // Per-frame parameters of the cull pass, in a storage buffer (the frustum alone is 96 bytes). Not a
@@ -530,7 +535,6 @@ struct SceneUniforms {
     vec4 shadowSplits;         // where cascades 0, 1, 2 (x, y, z) end along the view; w: past all
     vec4 shadow;               // x: 1 = shadows on, y: depth bias, z: one texel of the map in uv, w: the ground
                                // sunlight image's first level made this frame (render/ground_sunlight.h)
-    TerrainGrid terrain;       // the ground's heightfield (its heights in the scene set's binding 6)
 };
 
 // ---- Animation events on the GPU (render/event_pass.h, shaders/events.comp.glsl, docs/events.md) ----
@@ -575,7 +579,6 @@ struct EventPush {
                    // z: 1 = the previous segments' table, 0 = every character's current segment, w: unused
     vec4 window;   // x: the previous frame's time, y: this frame's (s since the epoch; events at from < t <= to),
                    // z: the most cycles of a clip one event is looked for over (a longer window keeps its end)
-    TerrainGrid terrain;  // the ground the events' places stand on
 };
 #define EVENT_MAX_CYCLES 64.0
 

@@ -15,6 +15,8 @@ layout(constant_id = 0) const bool kFilteredTiles = true;
 layout(constant_id = 1) const bool kSunlightImage = true;
 // The shadow map's comparisons on the ground, per map texel, mipmapped (render/ground_sunlight.h).
 layout(set = 0, binding = 4) uniform sampler2D groundSunlight;
+TERRAIN_BUFFER(0, 6);
+#include "terrain_height.h"
 
 // The share of the pixel's footprint that lies on odd tiles (tile.x + tile.y odd), for `p` in tile
 // units: the checker's square wave box-filtered over the footprint, which is the difference of its
@@ -37,7 +39,7 @@ float oddTileShare(vec2 p) {
 float groundSunlightAt(vec3 world) {
     vec3 dx = dFdx(world), dy = dFdy(world);  // before any branch: derivatives need the whole quad
     // The image holds the plane y = 0's sunlight: over a terrain, the map's comparisons at the pixel.
-    if (!kSunlightImage || scene.terrain.extent.z > 0.0) return sunlight(scene, world);
+    if (!kSunlightImage || terrainOn(terrainGrid)) return sunlight(scene, world);
     if (scene.shadow.x == 0.0) return 1.0;
     if (scene.shadowCascadeUse.x == 1.0) {  // one map over the view, as before cascades (its cost too)
         vec2 uv = (scene.shadowLight * vec4(world, 1.0)).xy * 0.5 + 0.5;

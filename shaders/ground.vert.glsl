@@ -6,7 +6,7 @@
 #include "gpu_types.h"
 
 layout(set = 0, binding = 0) uniform Scene { SceneUniforms scene; };
-layout(std430, set = 0, binding = 6) readonly buffer Terrain { float heights[]; };
+TERRAIN_BUFFER(0, 6);
 // x, z: centre; w: half extent in metres.
 layout(push_constant) uniform Push { vec4 cameraPosition; vec4 area; };
 layout(location = 0) out vec3 outWorld;
@@ -26,7 +26,7 @@ float lineAt(uint i, uint inner, uint stride, uint samples, float first, float w
 }
 
 void main() {
-    if (!terrainOn(scene.terrain)) {
+    if (!terrainOn(terrainGrid)) {
         vec2 c = vec2(kCorners[gl_VertexIndex]) * 2.0 - 1.0;
         vec3 world = vec3(area.x + c.x * area.w, 0.0, area.z + c.y * area.w);
         gl_Position = scene.viewProjection * vec4(world, 1.0);
@@ -34,7 +34,7 @@ void main() {
         outNormal = vec3(0.0, 1.0, 0.0);
         return;
     }
-    TerrainGrid grid = scene.terrain;
+    TerrainGrid grid = terrainGrid;
     uvec2 stride = uvec2(groundStride(grid.size.x), groundStride(grid.size.y));
     uvec2 inner = (grid.size.xy - 1u + stride - 1u) / stride;  // the grid's cells along each axis
     uint across = inner.x + 2u;

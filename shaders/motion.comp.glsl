@@ -19,13 +19,13 @@ layout(std430, set = 0, binding = 5) readonly buffer DrivenModels { DrivenModel 
 layout(std430, set = 0, binding = 6) readonly buffer Keys { DrivenKey keys[]; };
 layout(std430, set = 0, binding = 7) readonly buffer Heads { uint heads[]; };
 layout(std430, set = 0, binding = 8) readonly buffer Owners { uint owners[]; };  // shaders/driven_ingest.comp.glsl
-layout(std430, set = 0, binding = 9) readonly buffer Terrain { float heights[]; };
+TERRAIN_BUFFER(0, 9);
 
 #include "motion.glsl.inc"
 #include "driven_keys.h"
 #include "terrain_sample.glsl.inc"
 
-float groundHeight(vec2 p) { return terrainHeightAt(push.terrain, p); }
+float groundHeight(vec2 p) { return terrainHeightAt(terrainGrid, p); }
 
 // A driven character with keys: between the keys around the frame's time less the delay (time.y, on the
 // clock of epoch time.w), or past its newest (crowd::Crowd::drivenState repeats this search).
@@ -69,10 +69,13 @@ void moveDriven(uint c, uint model, uint count) {
 void moveCharacter(uint c) {
     MotionRecord m = motions[c];
     uint model = characters[c].ids.x;
-    // A driven character with keys (a device-driven one's: its own, not its slot's last character's).
+    // A driven character with keys (a device-driven one's: its own, not its slot's last character's). A
+    // crowd with driven characters always keeps keys (crowd::Crowd refuses them otherwise), so heads[] has a
+    // count per slot here. (Not tested against push.counts.z: lavapipe compiles a shader anew at every bind
+    // when a branch reads push constants alone, gpu_types.h.)
     bool keyed = m.phase.w == MOTION_DRIVEN_HOST ||
                  (m.phase.w == MOTION_DRIVEN_DEVICE && owners[c] == floatBitsToUint(characters[c].pose.w));
-    if (keyed && push.counts.z > 0u && heads[c] > 0u) {
+    if (keyed && heads[c] > 0u) {
         moveDriven(c, model, heads[c]);
         return;
     }

@@ -312,7 +312,7 @@ TEST(CrowdApi, TheReadmeExampleRunsAsWritten) {
     crowd::BehaviourSettings mill;
     mill.kind = crowd::Behaviour::Mill;
     mill.seed = 7;
-    crowd::Crowd crowd(models, crowd::gridLayout(models, layout), mill, crowd::Capacity{{1001}});  // a spare soldier
+    crowd::Crowd crowd(models, crowd::gridLayout(models, layout), mill, crowd::Capacity{{2000, 2000}});  // slots per model
     const std::uint32_t hero = crowd.spawn({.clip = 0, .position = {0, 0, 0}, .model = 0}).slot;
     crowd.moveTo(hero, {12.0f, -4.0f}, 2.0f);
     std::string standing;
@@ -333,7 +333,8 @@ TEST(CrowdApi, TheReadmeExampleRunsAsWritten) {
     EXPECT_EQ(standing, "idle");
     const crowd::MotionState end = crowd.stateAt(hero, 32.0f);
     EXPECT_LT(glm::length(glm::vec2(end.position.x, end.position.z)), 0.6f);
-    EXPECT_EQ(crowd.size(), 1001u);
+    EXPECT_EQ(crowd.population().live(), 1001u);
+    EXPECT_EQ(crowd.size(), 4000u);  // slots, living or free
 }
 
 // ---- Crossfades and feet ----

@@ -328,7 +328,6 @@ void CrowdRecorder::updateUniforms(std::uint32_t slot, const render::FrameView& 
     gpu::SceneUniforms scene = render::makeSceneUniforms(view.projection * view.view, 0.5f / (camera.farPlane + 1.0f),
                                                          cascades, shadows_, shadowMap_.size());
     scene.shadow.w = static_cast<float>(groundSunlight_.firstLevel(view.viewport.extent));
-    scene.terrain = terrain_.grid();
     scene_.update(slot, scene);
 }
 

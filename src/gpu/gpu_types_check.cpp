@@ -47,8 +47,7 @@ static_assert(sizeof(CullUniforms) == 6 * 16 + 5 * 16 + kCascadePlanesBytes + 4 
 static_assert(sizeof(SkinPassParams) == 32);
 static_assert(offsetof(SceneUniforms, shadowLight) == 112 &&
               offsetof(SceneUniforms, shadowSquares) == 176 + 16 * MAX_SHADOW_CASCADES &&
-              offsetof(SceneUniforms, terrain) == 176 + 32 * MAX_SHADOW_CASCADES + 64 &&
-              sizeof(SceneUniforms) == 176 + 32 * MAX_SHADOW_CASCADES + 64 + sizeof(TerrainGrid));
+              sizeof(SceneUniforms) == 176 + 32 * MAX_SHADOW_CASCADES + 64);
 static_assert(offsetof(MaterialTable, colors) == 16 && sizeof(MaterialTable) == 16 + 16 * MAX_MATERIALS);
 
 // Animation tables: vec4 members only (std430 arrays of them need no padding), a track is four uints.
@@ -56,7 +55,7 @@ static_assert(sizeof(AnimationModel) == 64 && offsetof(AnimationModel, root) == 
 static_assert(sizeof(AnimationJoint) == 96 && offsetof(AnimationJoint, inverseBind) == 48);
 static_assert(sizeof(AnimationClip) == 32 && sizeof(AnimationTrack) == 16);
 static_assert(sizeof(MotionRecord) == 64 && offsetof(MotionRecord, clips) == 48);
-static_assert(sizeof(PalettePush) == 16 && sizeof(MotionPush) == 64 && offsetof(MotionPush, terrain) == 32);
+static_assert(sizeof(PalettePush) == 16 && sizeof(MotionPush) == 32);
 // Driven characters: keys of two vec4s, a gait table of four, the host's samples packed as 16 bytes.
 static_assert(sizeof(DrivenKey) == 32 && sizeof(DrivenModel) == 64 && sizeof(DrivenKeyUpload) == 48);
 static_assert(sizeof(DeviceSample) == 16 && offsetof(DeviceSample, heading) == 12);
@@ -65,6 +64,6 @@ static_assert(sizeof(TerrainGrid) == 32 && offsetof(TerrainGrid, size) == 16);
 static_assert(sizeof(AnimationEvent) == 32 && sizeof(EventRecord) == 32 && offsetof(EventRecord, place) == 16);
 static_assert(sizeof(EventHeader) == 16 && offsetof(EventHeader, capacity) == 8);
 static_assert(sizeof(PreviousSegment) == 96 && offsetof(PreviousSegment, span) == 64 && offsetof(PreviousSegment, ids) == 80);
-static_assert(sizeof(EventPush) == 64 && offsetof(EventPush, terrain) == 32);
+static_assert(sizeof(EventPush) == 32);
 
 }  // namespace gpu

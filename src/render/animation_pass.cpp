@@ -50,7 +50,7 @@ bool parseAnimationPath(const std::string& name, AnimationPath& path) {
 
 AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, CrowdBuffers& buffers,
                              const DrawLists& lists, const TerrainBuffer& terrain, std::uint32_t framesInFlight)
-    : context_(context), buffers_(buffers), lists_(lists), terrain_(terrain) {
+    : context_(context), buffers_(buffers), lists_(lists) {
     try {
         const anim::ClipLibrary& library = crowd.library();
         for (std::uint32_t m = 0; m < crowd.models().size(); ++m) modelJoints_.push_back(library.jointCount(m));
@@ -99,7 +99,7 @@ AnimationPass::AnimationPass(const gpu::VulkanContext& context, const crowd::Cro
                                                      {storage, library_[6].buffer},        {storage, motions_.buffer},
                                                      {storage, buffers.characters().buffer}, {storage, driven_->models().buffer},
                                                      {storage, driven_->keys().buffer},    {storage, driven_->heads().buffer},
-                                                     {storage, driven_->owners().buffer},  {storage, terrain.heights().buffer}};
+                                                     {storage, driven_->owners().buffer},  {storage, terrain.buffer().buffer}};
         motionSet_ = std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, motionBindings);
         const gpu::BufferBinding paletteBindings[] = {
             {storage, library_[0].buffer},          {storage, library_[1].buffer},     {storage, library_[2].buffer},
@@ -218,8 +218,7 @@ void AnimationPass::recordMotion(VkCommandBuffer cmd, const crowd::Crowd& crowd,
     const auto sinceEpoch = static_cast<float>(time - crowd.epoch());
     const gpu::MotionPush push{glm::uvec4(crowd.size(), maxGroups, driven_->keysPerSlot(), 0u),
                                glm::vec4(sinceEpoch, crowd.drivenClock(time), static_cast<float>(crowd.drivenTiming().extrapolate),
-                                         static_cast<float>(crowd.epoch() / crowd::kEpochSeconds)),
-                               terrain_.grid()};
+                                         static_cast<float>(crowd.epoch() / crowd::kEpochSeconds))};
     const VkDescriptorSet set = motionSet_->set();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, motionLayout_, 0, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, motionLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);

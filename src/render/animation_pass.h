@@ -80,7 +80,6 @@ private:
     const gpu::VulkanContext& context_;
     CrowdBuffers& buffers_;
     const DrawLists& lists_;
-    const TerrainBuffer& terrain_;
     std::vector<std::uint32_t> modelJoints_;  // per model of the layout
     std::vector<gpu::Buffer> library_;
     std::uint64_t libraryBytes_ = 0;

@@ -134,7 +134,6 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
                      const CrowdBuffers& buffers, const DrawLists& lists, const TerrainBuffer& terrain,
                      std::uint32_t framesInFlight, std::uint32_t capacity)
     : context_(context),
-      terrain_(terrain),
       capacity_(capacity),
       previousCapacity_(previousCapacityFor(crowd, capacity)) {
     try {
@@ -175,7 +174,7 @@ EventPass::EventPass(const gpu::VulkanContext& context, const crowd::Crowd& crow
                 {storage, previous_.back().buffer},
                 {storage, segmentStarts_.buffer},
                 {storage, events_.buffer},
-                {storage, terrain.heights().buffer}};
+                {storage, terrain.buffer().buffer}};
             sets_.push_back(std::make_unique<gpu::DescriptorBundle>(context, VK_SHADER_STAGE_COMPUTE_BIT, bindings));
         }
         const VkDescriptorSetLayout setLayout = sets_.front()->layout();
@@ -330,8 +329,7 @@ void EventPass::record(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     auto dispatch = [&](std::uint32_t items, std::uint32_t previousTable) {
         const std::uint32_t groups = groupsFor(items, maxGroups);
-        const gpu::EventPush push{glm::uvec4(items, groups * CULL_WORKGROUP_SIZE, previousTable, 0u), window,
-                                  terrain_.grid()};
+        const gpu::EventPush push{glm::uvec4(items, groups * CULL_WORKGROUP_SIZE, previousTable, 0u), window};
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
         vkCmdDispatch(cmd, groups, 1, 1);
     };

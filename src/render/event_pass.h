@@ -70,7 +70,6 @@ private:
     void release();
 
     const gpu::VulkanContext& context_;
-    const TerrainBuffer& terrain_;
     std::uint32_t capacity_, previousCapacity_;
     gpu::Buffer clipEvents_, eventTable_, events_;
     // Per character, when its current segment truly starts (s since the epoch, a float): a record

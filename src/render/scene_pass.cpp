@@ -29,7 +29,7 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
         {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both, nullptr},
-        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};  // the terrain's heights
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both, nullptr}};  // the terrain's grid and heights
     setLayout_ = gpu::createSetLayout(context, bindings);
     // One set per frame in flight seen from the camera, then one per frame and shadow cascade seen from the light.
     const std::uint32_t sets = framesInFlight * (1 + kMostShadowCascades);
@@ -48,7 +48,7 @@ ScenePass::ScenePass(const gpu::VulkanContext& context, std::uint32_t framesInFl
                                    pool.textureCoordinates().buffer, 0, VK_WHOLE_SIZE);
         gpu::writeBufferDescriptor(context, sets_.back(), 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pool.materials().buffer, 0,
                                    VK_WHOLE_SIZE);
-        gpu::writeBufferDescriptor(context, sets_.back(), 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, terrain.heights().buffer, 0,
+        gpu::writeBufferDescriptor(context, sets_.back(), 6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, terrain.buffer().buffer, 0,
                                    VK_WHOLE_SIZE);
         constexpr VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         constexpr VkImageLayout readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;

@@ -16,17 +16,16 @@ std::uint32_t TerrainBuffer::samplesFor(const crowd::Crowd& crowd, std::uint32_t
 TerrainBuffer::TerrainBuffer(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t samples,
                              std::uint32_t framesInFlight)
     : context_(context), capacity_(samplesFor(crowd, samples)), staging_(framesInFlight) {
-    // Zeros until the first upload: flat, as the grid says (extent z = 0) until then.
-    const std::vector<float> zeros(capacity_, 0.0f);
-    heights_ = gpu::createBufferWithData(context, std::as_bytes(std::span(zeros)),
-                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                         "terrain heights");
+    // Zeros until the first upload: a grid of extent z = 0, flat.
+    const std::vector<std::byte> zeros(sizeof(gpu::TerrainGrid) + std::size_t{capacity_} * sizeof(float));
+    buffer_ = gpu::createBufferWithData(context, zeros, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        "terrain");
     grid_ = crowd::Terrain().grid();
 }
 
 TerrainBuffer::~TerrainBuffer() {
     for (gpu::Buffer& b : staging_) gpu::destroyBuffer(context_, b);
-    gpu::destroyBuffer(context_, heights_);
+    gpu::destroyBuffer(context_, buffer_);
 }
 
 void TerrainBuffer::check(const crowd::Crowd& crowd) const {
@@ -41,16 +40,18 @@ void TerrainBuffer::recordUpload(VkCommandBuffer cmd, std::uint32_t frameSlot, c
     if (crowd.terrainVersion() == uploadedVersion_ && !resend) return;
     uploadedVersion_ = crowd.terrainVersion();
     grid_ = crowd.terrain().grid();
-    const std::vector<float>& heights = crowd.terrain().heights();
-    if (heights.empty()) return;  // flat: the grid says so, the heights are not read
-    staging_[frameSlot] = gpu::createBuffer(context_, heights.size() * sizeof(float), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                            gpu::MemoryUse::HostUpload, "terrain heights (upload)");
-    std::memcpy(staging_[frameSlot].mapped, heights.data(), heights.size() * sizeof(float));
+    const std::vector<float>& heights = crowd.terrain().heights();  // none when flat: the grid says so
+    const std::size_t bytes = sizeof grid_ + heights.size() * sizeof(float);
+    staging_[frameSlot] = gpu::createBuffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, gpu::MemoryUse::HostUpload,
+                                            "terrain (upload)");
+    auto* mapped = static_cast<std::byte*>(staging_[frameSlot].mapped);
+    std::memcpy(mapped, &grid_, sizeof grid_);
+    if (!heights.empty()) std::memcpy(mapped + sizeof grid_, heights.data(), heights.size() * sizeof(float));
     // Every reader of the last frames (the motion pass, the ground) is done before the copy overwrites them.
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT},
                        {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-    const VkBufferCopy copy{0, 0, heights.size() * sizeof(float)};
-    vkCmdCopyBuffer(cmd, staging_[frameSlot].buffer, heights_.buffer, 1, &copy);
+    const VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, staging_[frameSlot].buffer, buffer_.buffer, 1, &copy);
     gpu::memoryBarrier(cmd, {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT},
                        {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT});
 }

@@ -1,8 +1,8 @@
 #pragma once
-// The crowd's terrain on the GPU (crowd/terrain.h): its heights in a storage buffer the motion pass (where
-// characters stand) and the ground (which is drawn as it) read, and its grid. Sized when the renderer is
-// made for the larger of the crowd's heightfield then and the samples the host asks room for; a terrain set
-// later uploads at the next frame.
+// The crowd's terrain on the GPU (crowd/terrain.h): its grid and then its heights in one storage buffer
+// (TERRAIN_BUFFER, gpu_types.h) that the motion pass (where characters stand), the event pass and the
+// ground (which is drawn as it) read. Sized when the renderer is made for the larger of the crowd's
+// heightfield then and the samples the host asks room for; a terrain set later uploads at the next frame.
 #include <cstdint>
 #include <vector>
 
@@ -30,14 +30,15 @@ public:
     // Uploads the crowd's heights when they changed since the last upload, or always with `resend` (a
     // frame that carried them may never have run: render/frame_ledger.h). Before the motion pass.
     void recordUpload(VkCommandBuffer cmd, std::uint32_t frameSlot, const crowd::Crowd& crowd, bool resend);
-    // The grid of the heights uploaded last (no terrain: extent z = 0).
+    // The grid of the heights uploaded last (no terrain: extent z = 0), as the CPU keeps it.
     const gpu::TerrainGrid& grid() const { return grid_; }
-    const gpu::Buffer& heights() const { return heights_; }
+    // The grid, then the heights.
+    const gpu::Buffer& buffer() const { return buffer_; }
 
 private:
     const gpu::VulkanContext& context_;
     std::uint32_t capacity_;
-    gpu::Buffer heights_;
+    gpu::Buffer buffer_;
     std::vector<gpu::Buffer> staging_;  // per frame slot: its last upload's (freed when the slot comes round)
     gpu::TerrainGrid grid_{};
     std::uint64_t uploadedVersion_ = ~0ull;

@@ -87,7 +87,9 @@ usage: crowd-bench [options]
   --validation         enable the Khronos validation layer
   --help               print this help
 crowd-render's other crowd and culling flags work too (--lod-thresholds, --lod-hysteresis, --clip),
-and every flag takes its value as --flag=value as well.
+and so do its host's-world flags: --terrain, --churn, --agents, --trajectories (with --trajectory-*)
+and --drive-delay (docs/host-driven.md; the CSV's cpu_ingest_ms and cpu_plan_ms time their CPU side).
+Every flag takes its value as --flag=value as well.
 Frame times are wall clock between frame starts with two frames in flight; per-pass GPU times come
 from the clock named in each row.
 )";
