@@ -499,7 +499,7 @@ void Crowd::applySample(std::size_t i, const SampleBatch& batch, std::uint64_t g
     const gpu::DrivenKey previous = count > 0 ? keys_.key(slot, count - 1) : gpu::DrivenKey{};
     gpu::DrivenKey key = driven::drivenKeyAfter(previous, count == 0, clock, static_cast<float>(epochIndex),
                                                 glm::vec2(batch.x[i], batch.z[i]), heading,
-                                                drivenModels_[characters_[slot].model]);
+                                                drivenModels_[population_.modelOf(slot)]);
     // A first key with no heading given faces where the character faced.
     if (count == 0 && std::isnan(heading)) key.place.w = flatStateAt(slot, plannedTo_).heading;
     keys_.push(slot, key, generation);
@@ -528,6 +528,9 @@ DriveResult Crowd::drive(const SampleBatch& batch) {
             if (std::atomic_ref<std::uint32_t>(batchStamps_[batch.characters[i].slot]).exchange(batch_) == batch_)
                 repeats.store(true, std::memory_order_relaxed);
     });
+    // A host that records no frames (no renderer, or one far behind) would grow the open key log without
+    // end: past every key the slots hold, sealing it costs a late renderer nothing (it uploads every key).
+    if (keyLogOpen_.size() + n > std::size_t{size()} * drivenKeysPerSlot_) sealChanges();
     const std::uint64_t generation = changes_.openGeneration();
     // The key log in the batch's order, each entry written by the thread that made its key (a renderer
     // uploads these keys, their slots' head counts with them); a late sample's entry is kNoKeySlot.
@@ -543,7 +546,7 @@ DriveResult Crowd::drive(const SampleBatch& batch) {
             const std::size_t before = lateHere;
             applySample(i, batch, generation, lateHere);
             const std::uint32_t slot = batch.characters[i].slot;
-            keyLogOpen_[logged + i] = lateHere == before ? std::pair(slot, keys_.count(slot) - 1u) : std::pair(kNoKeySlot, 0u);
+            keyLogOpen_[logged + i] = lateHere == before ? KeyLogEntry(slot, keys_.count(slot) - 1u) : KeyLogEntry(kNoKeySlot, 0u);
             loHere = glm::min(loHere, glm::vec2(batch.x[i], batch.z[i]));
             hiHere = glm::max(hiHere, glm::vec2(batch.x[i], batch.z[i]));
         }

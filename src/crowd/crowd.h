@@ -219,7 +219,14 @@ public:
     }
     // The same a list at a time (one per change generation, in order), for a reader that stages a list on
     // every core: an entry is a key when keyStillHeld says so (a late sample's entry holds kNoKeySlot).
-    using KeyLogList = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+    struct KeyLogEntry {
+        std::uint32_t slot, index;
+        // Left unset by a resize: drive() grows the log by a batch and fills it on every core, and
+        // zeroing a million entries first would cost a serial pass over 8 MB.
+        KeyLogEntry() noexcept {}  // NOLINT(modernize-use-equals-default): = default would zero them
+        KeyLogEntry(std::uint32_t s, std::uint32_t i) noexcept : slot(s), index(i) {}
+    };
+    using KeyLogList = std::vector<KeyLogEntry>;
     static constexpr std::uint32_t kNoKeySlot = ~0u;
     template <class F>
     bool forEachKeyListSince(std::uint64_t since, F&& f) const {
