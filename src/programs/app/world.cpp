@@ -1,6 +1,7 @@
 #include "app/world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/agent_drivers.h"
@@ -17,6 +18,11 @@ namespace {
 
 // Metres an agent may go from where it started (shaders/agent_path.h: a loop of up to 8 m across, more).
 constexpr float kAgentReach = 17.0f;
+
+// The half side of the square a grid crowd of this radius (its farthest character from the centre, the
+// square's corner) covers: a world box of it frames the crowd as its own bounds do (a box of half side
+// `radius` would be sqrt 2 times wider, and the camera that frames it would stand sqrt 2 times farther).
+float squareHalfSide(float radius) { return radius / std::sqrt(2.0f); }
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
     char text[256];
@@ -77,8 +83,9 @@ World buildWorld(const HostDevice* device, const CrowdModels& models, const Scen
         crowd.bounds(center, radius, tallest);
         if (w.agents != WorldOptions::Agents::None) {
             // The agents leave their grid: the world is its reach (measured once, fixed).
-            const float lo[3] = {center[0] - radius - kAgentReach, 0.0f, center[2] - radius - kAgentReach};
-            const float hi[3] = {center[0] + radius + kAgentReach, 0.0f, center[2] + radius + kAgentReach};
+            const float half = squareHalfSide(radius) + kAgentReach;
+            const float lo[3] = {center[0] - half, 0.0f, center[2] - half};
+            const float hi[3] = {center[0] + half, 0.0f, center[2] + half};
             crowd.setWorldBounds(lo, hi);
             crowd.setDrivenTiming({w.delay, 0.5});
             if (w.agents == WorldOptions::Agents::Host) {
@@ -89,8 +96,9 @@ World buildWorld(const HostDevice* device, const CrowdModels& models, const Scen
             }
         } else if (w.churn > 0.0) {
             // Comers take the slots goers left: the grid stays the world.
-            const float lo[3] = {center[0] - radius, 0.0f, center[2] - radius};
-            const float hi[3] = {center[0] + radius, 0.0f, center[2] + radius};
+            const float half = squareHalfSide(radius);
+            const float lo[3] = {center[0] - half, 0.0f, center[2] - half};
+            const float hi[3] = {center[0] + half, 0.0f, center[2] + half};
             crowd.setWorldBounds(lo, hi);
             world.driver = std::make_unique<ChurnDriver>(w.churn, scene.seed);
         }
