@@ -485,7 +485,7 @@ bool Crowd::checkBatch(const SampleBatch& batch) const {
                      ": times and positions must be finite (times within 1e12 s), a heading a number or NaN");
 }
 
-void Crowd::applySample(std::size_t i, const SampleBatch& batch, std::uint64_t generation, std::size_t& late) {
+void Crowd::applySample(std::size_t i, const SampleBatch& batch, std::size_t& late) {
     const std::uint32_t slot = batch.characters[i].slot;
     const double time = batch.times[i];
     const std::uint32_t count = keys_.count(slot);
@@ -502,7 +502,7 @@ void Crowd::applySample(std::size_t i, const SampleBatch& batch, std::uint64_t g
                                                 drivenModels_[population_.modelOf(slot)]);
     // A first key with no heading given faces where the character faced.
     if (count == 0 && std::isnan(heading)) key.place.w = flatStateAt(slot, plannedTo_).heading;
-    keys_.push(slot, key, generation);
+    keys_.push(slot, key);
 }
 
 DriveResult Crowd::drive(const SampleBatch& batch) {
@@ -531,7 +531,6 @@ DriveResult Crowd::drive(const SampleBatch& batch) {
     // A host that records no frames (no renderer, or one far behind) would grow the open key log without
     // end: past every key the slots hold, sealing it costs a late renderer nothing (it uploads every key).
     if (keyLogOpen_.size() + n > std::size_t{size()} * drivenKeysPerSlot_) sealChanges();
-    const std::uint64_t generation = changes_.openGeneration();
     // The key log in the batch's order, each entry written by the thread that made its key (a renderer
     // uploads these keys, their slots' head counts with them); a late sample's entry is kNoKeySlot.
     const std::size_t logged = keyLogOpen_.size();
@@ -544,7 +543,7 @@ DriveResult Crowd::drive(const SampleBatch& batch) {
         glm::vec2 loHere(1e30f), hiHere(-1e30f);
         for (std::uint32_t i = begin; i < end; ++i) {
             const std::size_t before = lateHere;
-            applySample(i, batch, generation, lateHere);
+            applySample(i, batch, lateHere);
             const std::uint32_t slot = batch.characters[i].slot;
             keyLogOpen_[logged + i] = lateHere == before ? KeyLogEntry(slot, keys_.count(slot) - 1u) : KeyLogEntry(kNoKeySlot, 0u);
             loHere = glm::min(loHere, glm::vec2(batch.x[i], batch.z[i]));

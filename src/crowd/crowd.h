@@ -372,7 +372,7 @@ private:
     // Throws gpu::Error naming the first bad sample; returns whether any sample is for a character of
     // the behaviour (its first: it becomes driven).
     bool checkBatch(const SampleBatch& batch) const;
-    void applySample(std::size_t i, const SampleBatch& batch, std::uint64_t generation, std::size_t& late);
+    void applySample(std::size_t i, const SampleBatch& batch, std::size_t& late);
     const KeyLogList& keyLogOf(std::uint64_t generation) const;
     void command(std::uint32_t character, double at);
     PlanContext planContext(std::uint32_t character) const;

@@ -50,17 +50,7 @@ gpu::DrivenModel drivenModel(const anim::ClipLibrary& library, std::uint32_t mod
 }
 
 DrivenKeys::DrivenKeys(std::uint32_t slots, std::uint32_t perSlot)
-    : perSlot_(perSlot),
-      keys_(std::size_t{slots} * perSlot),
-      generations_(std::size_t{slots} * perSlot, 0u),
-      counts_(slots, 0u) {}
-
-void DrivenKeys::push(std::uint32_t slot, const gpu::DrivenKey& key, std::uint64_t generation) {
-    const std::size_t at = std::size_t{slot} * perSlot_ + counts_[slot] % perSlot_;
-    keys_[at] = key;
-    generations_[at] = generation;
-    ++counts_[slot];
-}
+    : perSlot_(perSlot), keys_(std::size_t{slots} * perSlot), counts_(slots, 0u) {}
 
 double keySceneTime(const gpu::DrivenKey& key) {
     return static_cast<double>(key.motion.w) * kEpochSeconds + static_cast<double>(key.place.x);

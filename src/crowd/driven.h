@@ -47,7 +47,9 @@ struct DrivenSample {
     float heading;  // radians about +y; NaN: towards the motion
 };
 
-// The keys of the characters driven from the host's memory: per slot a ring of its last `perSlot`.
+// The keys of the characters driven from the host's memory: per slot a ring of its last `perSlot`. Kept as
+// the GPU keeps them, ring entry k of every slot together (k x slots + slot): a batch that gives each
+// character its next sample reads and writes the keys in one sweep rather than a cache line a character.
 class DrivenKeys {
 public:
     DrivenKeys() = default;
@@ -57,22 +59,18 @@ public:
     // Keys the slot has had since it was last cleared (the ring holds the last perSlot of them).
     std::uint32_t count(std::uint32_t slot) const { return counts_[slot]; }
     // Key `index` (counted from the slot's first; one the ring still holds).
-    const gpu::DrivenKey& key(std::uint32_t slot, std::uint32_t index) const {
-        return keys_[std::size_t{slot} * perSlot_ + index % perSlot_];
-    }
-    // The change generation (crowd/change_log.h) the key was made in: a renderer uploads those after its own.
-    std::uint64_t generationOf(std::uint32_t slot, std::uint32_t index) const {
-        return generations_[std::size_t{slot} * perSlot_ + index % perSlot_];
-    }
-    void push(std::uint32_t slot, const gpu::DrivenKey& key, std::uint64_t generation);
+    const gpu::DrivenKey& key(std::uint32_t slot, std::uint32_t index) const { return keys_[at(slot, index)]; }
+    void push(std::uint32_t slot, const gpu::DrivenKey& key) { keys_[at(slot, counts_[slot]++)] = key; }
     void clear(std::uint32_t slot) { counts_[slot] = 0; }
     // The oldest key the ring still holds.
     std::uint32_t oldest(std::uint32_t slot) const { return counts_[slot] > perSlot_ ? counts_[slot] - perSlot_ : 0u; }
 
 private:
+    std::size_t at(std::uint32_t slot, std::uint32_t index) const {
+        return std::size_t{index % perSlot_} * counts_.size() + slot;
+    }
     std::uint32_t perSlot_ = 0;
     std::vector<gpu::DrivenKey> keys_;
-    std::vector<std::uint64_t> generations_;
     std::vector<std::uint32_t> counts_;
 };
 
