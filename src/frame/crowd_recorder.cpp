@@ -525,7 +525,9 @@ std::vector<skin::MemoryItem> CrowdRecorder::memory() const {
                                            {"motion segments (GPU animation)", animationPass_.segmentBytes()},
                                            {"culling lists and draw commands", lists_.bytes()},
                                            {"shadow map", shadowMap_.bytes()},
-                                           {"ground sunlight (shadow map on the ground)", groundSunlight_.bytes()}};
+                                           {"ground sunlight (shadow map on the ground)", groundSunlight_.bytes()},
+                                           {"driven keys, counts and their uploads", animationPass_.driven().bytes()},
+                                           {"terrain", terrain_.buffer().size}};
     if (shadowRaster_) items.push_back({"shadow map depth (compute raster)", shadowRaster_->bytes()});
     if (eventPass_) items.push_back({"event buffer, clip events, previous segments", eventPass_->bytes()});
     if (atlas_) items.push_back({"impostor atlas", atlas_->bytes()});
@@ -544,10 +546,12 @@ std::map<std::string, double> CrowdRecorder::memoryPerCharacter() const {
                                              lists_.lodState().size + lists_.shadowStates().size +
                                              lists_.impostorList().size +
                                              lists_.characterDraws().size + cut.candidates + cut.boundary +
-                                             cut.tieBits + (eventPass_ ? eventPass_->characterBytes() : 0u));
+                                             cut.tieBits + (eventPass_ ? eventPass_->characterBytes() : 0u) +
+                                             animationPass_.driven().bytes());
     double meshSlots = static_cast<double>(lists_.visible().size + lists_.draws().size);
     for (const skin::MemoryItem& item : method_->memory()) meshSlots += static_cast<double>(item.bytes);
     const double fixed = static_cast<double>(pool_.bytes() + animationPass_.libraryBytes() + shadowMap_.bytes() +
+                                             terrain_.buffer().size +
                                              groundSunlight_.bytes() +
                                              (shadowRaster_ ? shadowRaster_->bytes() : 0u) +
                                              (impostorDraw_ ? impostorDraw_->bytes() : 0u) + cut.histograms +
