@@ -63,7 +63,8 @@ if has driven; then
   has live || bench stress-still --scene stress --models soldier --counts "$count"
   bench stress-hills --scene stress --models soldier --counts "$count" --terrain hills
   if [[ -f $trajectories ]]; then
-    bench corridor-replay --trajectories "$trajectories" --trajectory-copies "$copies" --models soldier --terrain hills
+    bench corridor-replay --scene default --trajectories "$trajectories" --trajectory-copies "$copies" --models soldier \
+      --terrain hills --start 40
   else
     echo "corridor replay skipped: no recording at $trajectories"
   fi

@@ -171,6 +171,8 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args) {
     o.seed = o.scene.scene.seed;
     o.assetRoot = o.scene.scene.assetRoot;
     const bool sceneGiven = given(args, "--scene");
+    // A replay's crowd is the recording's people, whatever the count: one run, not one a count.
+    if (!o.scene.scene.world.trajectories.empty() && !given(args, "--counts")) o.counts = {1};
     if (sceneGiven) {
         // A scene's crowd, unless the lists are given.
         const app::ScenePreset& preset = app::findScenePreset(o.scene.scene.scene);

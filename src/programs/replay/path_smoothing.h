@@ -11,7 +11,7 @@ namespace replay {
 
 // The corridor's heads sway at 0.85 Hz (a stride). 0.6 s takes a quarter of the sway out (lateral RMS
 // about a smooth path 34 -> 26 mm) and moves no sample more than 8.6 cm; 1.0 s halves it but reaches
-// 10 cm at the corridor's sharpest turns (docs/trajectories.md has the measurements).
+// 10 cm at the corridor's sharpest turns (docs/host-driven.md, "Smoothing", has the measurements).
 inline constexpr double kDefaultSmoothingWindow = 0.6;
 // And how far a sample may move, at most: 2.5 cm keeps the sway out and the corners where they were, so a
 // character's root (its clips' own sway added, 6.9 cm at the most for the soldier's walk) stays within
