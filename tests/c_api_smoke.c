@@ -105,7 +105,111 @@ static void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
+/* The host's world in C (issue 40), each call against what C++ does: a capacity of slots, handles that go
+ * stale, batches all or none, samples from the host's memory, terrain; every refusal its code and line. */
+static void host_world_in_c(void) {
+    crowdgpu_model soldier = NULL;
+    EXPECT(crowdgpu_model_soldier(1, &soldier) == CROWDGPU_OK, "soldier: %s", crowdgpu_last_error());
+    const crowdgpu_character walker = {0, 0, 0.0f, 1.0f, {0.0f, 0.0f, 0.0f}, 0.0f, 1.0f, {1.0f, 1.0f, 1.0f},
+                                       CROWDGPU_MOTION_BEHAVIOUR};
+    crowdgpu_character initial[2] = {walker, walker};
+    initial[1].motion = CROWDGPU_MOTION_HOST_SAMPLES;
+    initial[1].position[0] = 2.0f;
+    const uint32_t most[1] = {3};
+    const crowdgpu_capacity capacity = {most, 0}; /* 0 keys: 8, since a character is driven */
+    crowdgpu_crowd crowd = NULL;
+    EXPECT(crowdgpu_crowd_create(&soldier, 1, initial, 2, &capacity, 1, CROWDGPU_IN_PLACE, &crowd) == CROWDGPU_OK,
+           "a crowd of 2 in 3 slots: %s", crowdgpu_last_error());
+    EXPECT(crowdgpu_crowd_size(crowd) == 3 && crowdgpu_crowd_live_count(crowd) == 2, "3 slots, 2 living");
+
+    /* Spawn into the spare slot; past the capacity, its own code, nothing changed. */
+    crowdgpu_handle third = {0, 0}, batch[2] = {{0, 0}, {0, 0}};
+    EXPECT(crowdgpu_crowd_spawn(crowd, &walker, &third) == CROWDGPU_OK && third.slot == 2 && third.generation == 1,
+           "spawn: slot %u generation %u: %s", third.slot, third.generation, crowdgpu_last_error());
+    EXPECT(crowdgpu_crowd_spawn(crowd, &walker, NULL) == CROWDGPU_ERROR_CAPACITY_EXCEEDED &&
+               strstr(crowdgpu_last_error(), "taken") != NULL,
+           "a spawn past the capacity: %s", crowdgpu_last_error());
+    const crowdgpu_character two[2] = {walker, walker};
+    EXPECT(crowdgpu_crowd_spawn_batch(crowd, two, 2, batch) == CROWDGPU_ERROR_CAPACITY_EXCEEDED &&
+               crowdgpu_crowd_live_count(crowd) == 3,
+           "a batch past the capacity changes nothing: %s", crowdgpu_last_error());
+
+    /* Remove: the handle goes stale; a batch with a stale or repeated handle is refused whole. */
+    EXPECT(crowdgpu_crowd_remove(crowd, third) == CROWDGPU_OK && !crowdgpu_crowd_alive(crowd, third), "remove");
+    EXPECT(crowdgpu_crowd_remove(crowd, third) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               strstr(crowdgpu_last_error(), "removed") != NULL,
+           "a stale handle: %s", crowdgpu_last_error());
+    crowdgpu_handle first = {0, 0};
+    EXPECT(crowdgpu_crowd_handle(crowd, 0, &first) == CROWDGPU_OK && first.generation == 1, "handle of slot 0");
+    const crowdgpu_handle twice[2] = {first, first};
+    EXPECT(crowdgpu_crowd_remove_batch(crowd, twice, 2) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               strstr(crowdgpu_last_error(), "twice") != NULL && crowdgpu_crowd_alive(crowd, first),
+           "a handle given twice: %s", crowdgpu_last_error());
+    const crowdgpu_handle with_stale[2] = {first, third};
+    EXPECT(crowdgpu_crowd_remove_batch(crowd, with_stale, 2) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               crowdgpu_crowd_alive(crowd, first),
+           "a batch with a stale handle removes nobody: %s", crowdgpu_last_error());
+    /* The freed slot is reused under a new generation; the old handle stays stale. */
+    EXPECT(crowdgpu_crowd_spawn_batch(crowd, two, 1, batch) == CROWDGPU_OK && batch[0].slot == 2 &&
+               batch[0].generation == 2 && !crowdgpu_crowd_alive(crowd, third),
+           "the slot reused: slot %u generation %u", batch[0].slot, batch[0].generation);
+
+    /* Samples: applied, late (ignored and counted), or the whole batch refused naming the sample. */
+    crowdgpu_handle driven = {0, 0};
+    EXPECT(crowdgpu_crowd_handle(crowd, 1, &driven) == CROWDGPU_OK, "handle of slot 1");
+    const double times[2] = {0.1, 0.2};
+    const float xs[2] = {2.0f, 2.3f}, zs[2] = {0.0f, 0.0f};
+    uint32_t applied = 0, late = 0;
+    const crowdgpu_handle both[2] = {driven, driven};
+    EXPECT(crowdgpu_crowd_drive(crowd, both, times, xs, zs, NULL, 2, &applied, &late) == CROWDGPU_OK && applied == 2 &&
+               late == 0,
+           "two samples: applied %u late %u: %s", applied, late, crowdgpu_last_error());
+    EXPECT(crowdgpu_crowd_drive(crowd, both, times, xs, zs, NULL, 1, &applied, &late) == CROWDGPU_OK && applied == 0 &&
+               late == 1,
+           "an old sample is late, not an error: applied %u late %u", applied, late);
+    const float nan_x[1] = {NAN};
+    const double later[1] = {0.3};
+    EXPECT(crowdgpu_crowd_drive(crowd, both, later, nan_x, zs, NULL, 1, NULL, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               strstr(crowdgpu_last_error(), "sample 0") != NULL,
+           "a NaN position: %s", crowdgpu_last_error());
+    const crowdgpu_handle stale_and_good[2] = {third, driven};
+    const double times2[2] = {0.3, 0.3};
+    EXPECT(crowdgpu_crowd_drive(crowd, stale_and_good, times2, xs, zs, NULL, 2, NULL, NULL) ==
+                   CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               crowdgpu_crowd_drive(crowd, both, later, xs, zs, NULL, 1, &applied, &late) == CROWDGPU_OK && applied == 1,
+           "a stale handle refuses the whole batch (the good sample then applies alone): %s", crowdgpu_last_error());
+    EXPECT(crowdgpu_crowd_set_driven_timing(crowd, -1.0, 0.5) == CROWDGPU_ERROR_INVALID_ARGUMENT, "a negative delay");
+
+    /* Terrain: a tilted 2 x 2 grid, bilinear between its corners; bad ones refused, the ground kept. */
+    const float heights[4] = {0.0f, 1.0f, 2.0f, 3.0f}; /* (x0,z0) (x1,z0) (x0,z1) (x1,z1) */
+    const float origin[2] = {-5.0f, -5.0f}, size[2] = {10.0f, 10.0f}, no_size[2] = {0.0f, 10.0f};
+    const float bad_heights[4] = {0.0f, NAN, 0.0f, 0.0f};
+    EXPECT(crowdgpu_crowd_set_terrain(crowd, 2, 2, heights, origin, size) == CROWDGPU_OK, "terrain: %s",
+           crowdgpu_last_error());
+    EXPECT(fabsf(crowdgpu_crowd_ground_height(crowd, 0.0f, 0.0f) - 1.5f) < 1e-6f &&
+               fabsf(crowdgpu_crowd_ground_height(crowd, 2.5f, -5.0f) - 0.75f) < 1e-6f &&
+               fabsf(crowdgpu_crowd_ground_height(crowd, 99.0f, 99.0f) - 3.0f) < 1e-6f,
+           "bilinear heights, the edge's beyond");
+    EXPECT(crowdgpu_crowd_set_terrain(crowd, 2, 2, bad_heights, origin, size) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               crowdgpu_crowd_set_terrain(crowd, 2, 2, heights, origin, no_size) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               fabsf(crowdgpu_crowd_ground_height(crowd, 0.0f, 0.0f) - 1.5f) < 1e-6f,
+           "a NaN height and a zero extent refused, the terrain kept: %s", crowdgpu_last_error());
+    crowdgpu_crowd_destroy(crowd);
+
+    /* A crowd made without driven keys (none driven, no keys asked for) refuses samples. */
+    crowdgpu_crowd plain = NULL;
+    EXPECT(crowdgpu_crowd_create_grid(&soldier, 1, 2, 1, CROWDGPU_IN_PLACE, &plain) == CROWDGPU_OK, "grid");
+    crowdgpu_handle h0 = {0, 0};
+    EXPECT(crowdgpu_crowd_handle(plain, 0, &h0) == CROWDGPU_OK &&
+               crowdgpu_crowd_drive(plain, &h0, times, xs, zs, NULL, 1, NULL, NULL) == CROWDGPU_ERROR_INVALID_ARGUMENT &&
+               strstr(crowdgpu_last_error(), "driven keys") != NULL,
+           "samples for a crowd without keys: %s", crowdgpu_last_error());
+    crowdgpu_crowd_destroy(plain);
+    crowdgpu_model_destroy(soldier);
+}
+
 int main(void) {
+    host_world_in_c();
     /* ---- Instance with validation and synchronization validation ---- */
     const char* layer = "VK_LAYER_KHRONOS_validation";
     const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;

@@ -1,4 +1,4 @@
-// Reading pedestrian trajectory files (src/programs/replay/, docs/trajectories.md): each format from
+// Reading pedestrian trajectory files (src/programs/replay/, docs/host-driven.md): each format from
 // small files written here, with exact times and positions, unit and axis conversion, detection and its
 // override, every malformed case with its exact "file:line" message, empty and one-person files, and
 // the flags' values. Copies and the feed: test_trajectory_replay.cpp; the shared recordings:

@@ -1,4 +1,4 @@
-// Replaying a recording (src/programs/replay/, docs/trajectories.md): copies tiled side by side and
+// Replaying a recording (src/programs/replay/, docs/host-driven.md): copies tiled side by side and
 // shifted in time, the feed against a hand-computed schedule and against a brute-force reference
 // through steps, jumps and seeks, and path smoothing of a straight and a swaying walk.
 #include <algorithm>
