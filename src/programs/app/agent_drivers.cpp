@@ -199,6 +199,23 @@ DeviceAgents::Buffer DeviceAgents::makeBuffer(VkDeviceSize size, VkBufferUsageFl
     return b;
 }
 
+namespace {
+
+// Compute-shader accesses `from` made available to compute-shader accesses `to` (the agents' pass and
+// the renderer's compute passes, in one queue).
+void computeBarrier(VkCommandBuffer cmd, VkAccessFlags2 from, VkAccessFlags2 to) {
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    barrier.srcAccessMask = from;
+    barrier.dstAccessMask = to;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+}  // namespace
+
 const crowdgpu::DeviceSamples* DeviceAgents::recordBeforeCompute(VkCommandBuffer cmd, std::uint32_t slot, double time) {
     // The slot's last frame read its samples (the renderer's compute pass): done, its fence waited.
     const std::uint32_t groups = std::clamp((agents_ + 63u) / 64u, 1u, 65535u);
@@ -207,29 +224,13 @@ const crowdgpu::DeviceSamples* DeviceAgents::recordBeforeCompute(VkCommandBuffer
         float time, unused;
     } push{agents_, groups * 64u, static_cast<float>(time), 0.0f};
     // The slot's last frame's reads (the renderer's ingest) come before these writes.
-    VkMemoryBarrier2 before{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    before.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    before.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-    before.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    before.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    VkDependencyInfo ordering{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    ordering.memoryBarrierCount = 1;
-    ordering.pMemoryBarriers = &before;
-    vkCmdPipelineBarrier2(cmd, &ordering);
+    computeBarrier(cmd, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &sets_[slot], 0, nullptr);
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, groups, 1, 1);
     // The renderer reads them in its compute passes (crowdgpu::DeviceSamples asks for this barrier).
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    barrier.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    computeBarrier(cmd, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     return &lent_[slot];
 }
 
