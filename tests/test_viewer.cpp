@@ -285,6 +285,33 @@ TEST(ViewerProgram, ScriptedScreenshotMatchesCrowdRender) {
     EXPECT_LT(test::fractionOfMatchingPixels(references[0], references[1], 2), 0.995) << "the filter changed nothing";
 }
 
+TEST(ViewerProgram, ARecordingReplaysAsInCrowdRender) {
+    SKIP_WITHOUT_XVFB();
+    // A recorded crowd (two people walking past each other, PeTrack text) on hills, from 1.5 s into it:
+    // the viewer's picture is crowd-render's (the recording's time, which the panel's slider scrubs, is
+    // the scene's time).
+    const std::string recording = tempFile("walkers.txt");
+    {
+        std::ofstream file(recording);
+        file << "# framerate: 25 fps\n# id frame x/cm y/cm z/cm\n";
+        for (int frame = 0; frame <= 100; ++frame)
+            file << "1 " << frame << " " << 4.8 * frame << " 0 170\n2 " << frame << " " << 600 - 4.8 * frame << " 150 170\n";
+    }
+    const std::string scene =
+        "--trajectories " + recording + " --terrain hills --start 1.5 --frames 3 --size 160x120 --validation";
+    const std::string png = tempFile("replay.png");
+    const test::ProgramResult r = runUnderXvfb(kView, scene + deviceFlag() + " --no-ui --screenshot " + png);
+    expectCleanRun(r);
+    const app::Rgba8Image viewer = readPng(png);
+    const app::Rgba8Image reference = renderReference(scene, "replay-reference.png");
+    ASSERT_EQ(viewer.width, 160u);
+    const double matching = test::fractionOfMatchingPixels(viewer, reference, 2);
+    EXPECT_GE(matching, 0.995);
+    if (matching < 0.995) keepForInspection(viewer, reference, "viewer-replay");
+    std::filesystem::remove(png);
+    std::filesystem::remove(recording);
+}
+
 TEST(ViewerProgram, MeshCapacityGivesCrowdRendersPicture) {
     SKIP_WITHOUT_XVFB();
     // Impostors with a cap of 2 mesh-level characters: the other 14 are drawn as impostors, in both programs.
