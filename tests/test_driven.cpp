@@ -16,10 +16,7 @@
 
 namespace {
 
-const model::SkinnedModel& soldier() {
-    static const model::SkinnedModel m = test::loadModel("soldier", 1);
-    return m;
-}
+using test::soldier;
 
 // One character driven from the host's memory, its samples given one at a time; its ring keeps
 // `keys` of them (a query further back than the ring reaches is refused, or held at the oldest).

@@ -34,14 +34,8 @@ namespace {
 using test::GpuTest;
 constexpr float kFrame = 1.0f / 60.0f;
 
-const model::SkinnedModel& soldier() {
-    static const model::SkinnedModel m = test::loadModel("soldier", 1);
-    return m;
-}
-const model::SkinnedModel& horse() {
-    static const model::SkinnedModel m = test::loadModel("horse", 1);
-    return m;
-}
+using test::horse;
+using test::soldier;
 
 crowd::Character standingAt(glm::vec3 position, std::uint32_t clip = 0) {
     crowd::Character c;

@@ -13,14 +13,8 @@
 
 namespace {
 
-const model::SkinnedModel& soldier() {
-    static const model::SkinnedModel m = test::loadModel("soldier", 1);
-    return m;
-}
-const model::SkinnedModel& horse() {
-    static const model::SkinnedModel m = test::loadModel("horse", 1);
-    return m;
-}
+using test::horse;
+using test::soldier;
 
 crowd::Character at(float x, std::uint32_t model = 0) {
     crowd::Character c;

@@ -29,14 +29,8 @@ namespace {
 using Native = simd::NativeFloat4;
 using Portable = simd::LaneFloat4;
 
-const model::SkinnedModel& soldier() {
-    static const model::SkinnedModel m = test::loadModel("soldier", 1);
-    return m;
-}
-const model::SkinnedModel& horse() {
-    static const model::SkinnedModel m = test::loadModel("horse", 1);
-    return m;
-}
+using test::horse;
+using test::soldier;
 // The test strip character with a LINEAR clip ("bend") and a STEP + CUBICSPLINE one ("hop").
 const model::SkinnedModel& strip() {
     static const model::SkinnedModel m = [] {

@@ -179,6 +179,16 @@ model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed) {
     return app::loadModel(name, seed).data()->model;
 }
 
+const model::SkinnedModel& soldier() {
+    static const model::SkinnedModel m = loadModel("soldier", 1);
+    return m;
+}
+
+const model::SkinnedModel& horse() {
+    static const model::SkinnedModel m = loadModel("horse", 1);
+    return m;
+}
+
 std::vector<skin::CpuSkinnedVertex> cpuFadedCharacter(const model::SkinnedModel& model,
                                                       const std::vector<model::LodMorphTarget>& targets,
                                                       const std::vector<skin::CpuSkinnedVertex>& own, std::uint32_t lod,

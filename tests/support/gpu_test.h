@@ -92,6 +92,9 @@ std::uint32_t clipIndex(const model::SkinnedModel& model, const std::string& cli
 crowdgpu::Method publicMethod(skin::Method method);
 // A model as the programs load it (app::loadModel), as the library holds it.
 model::SkinnedModel loadModel(const std::string& name, std::uint32_t seed = 1);
+// The built-in soldier and horse of seed 1, loaded once per process, for tests that only read them.
+const model::SkinnedModel& soldier();
+const model::SkinnedModel& horse();
 
 // The world-space positions and normals (xyz, w as written) of one character, read back from the GPU.
 struct ReadbackVertices {
