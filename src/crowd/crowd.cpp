@@ -300,7 +300,7 @@ void Crowd::spawn(const Character* characters, std::size_t count, Handle* handle
                     (count > 1 ? "a batch of " + std::to_string(count) + " needs " + std::to_string(wanted[m]) +
                                      " slots for model " + std::to_string(m) + " (" + models_[m]->name + "), and " +
                                      std::to_string(population_.freeOf(m)) + " of the crowd's " +
-                                     std::to_string(population_.capacityOf(m)) + " are free (the others taken"
+                                     std::to_string(population_.capacityOf(m)) + " are free (the others taken: "
                                : "every one of the crowd's " + std::to_string(population_.capacityOf(m)) +
                                      " slots for model " + std::to_string(m) + " (" + models_[m]->name + ") is taken (") +
                     "its capacity, fixed when the crowd was made)",
