@@ -5,7 +5,6 @@
 // character in ns. CPU only: no Vulkan device.
 #include <algorithm>
 #include <barrier>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/cpu_bench_options.h"
 #include "crowdgpu/crowd.hpp"
 #include "crowdgpu/error.hpp"
 
@@ -26,53 +26,8 @@ constexpr const char* kUsage = R"(usage: event-bench [--count N] [--frames N] [-
   --start SECONDS  scene time of the first frame (default 30: the milling crowd under way)
 )";
 
-struct Options {
-    std::uint32_t count = 100000, frames = 120;
-    std::vector<unsigned> threads = {1};
-    double start = 30.0;
-};
-
-// A whole positive number, or false.
-bool parseCount(const std::string& text, std::uint32_t& out) {
-    const char* end = text.data() + text.size();
-    const auto [at, error] = std::from_chars(text.data(), end, out);
-    return error == std::errc() && at == end && out > 0;
-}
-
-bool parseOptions(int argc, char** argv, Options& o, std::string& problem) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (flag == "--help" || flag == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
-        }
-        if (i + 1 >= argc) return problem = flag + ": expected a value", false;
-        const std::string value = argv[++i];
-        std::uint32_t n = 0;
-        if (flag == "--count" || flag == "--frames") {
-            if (!parseCount(value, n)) return problem = flag + ": expected a positive whole number, got '" + value + "'", false;
-            (flag == "--count" ? o.count : o.frames) = n;
-        } else if (flag == "--threads") {
-            o.threads.clear();
-            std::size_t from = 0;
-            while (from <= value.size()) {
-                const std::size_t comma = std::min(value.find(',', from), value.size());
-                if (!parseCount(value.substr(from, comma - from), n) || n > 1024)
-                    return problem = "--threads: expected thread counts 1 to 1024 separated by commas, got '" + value + "'", false;
-                o.threads.push_back(n);
-                from = comma + 1;
-            }
-        } else if (flag == "--start") {
-            const char* end = value.data() + value.size();
-            const auto [at, error] = std::from_chars(value.data(), end, o.start);
-            if (error != std::errc() || at != end || !(o.start >= 0.0 && o.start <= 1e6))
-                return problem = "--start: expected seconds from 0 to 1e6, got '" + value + "'", false;
-        } else {
-            return problem = "unknown flag '" + flag + "' (see --help)", false;
-        }
-    }
-    return true;
-}
+using Options = app::CpuBenchOptions;
+Options defaultOptions() { return {100000, 120, {1}, 30.0}; }
 
 struct Row {
     const char* behaviour;
@@ -149,9 +104,9 @@ Row measure(crowdgpu::Crowd& crowd, const char* behaviour, unsigned threads, con
 }  // namespace
 
 int main(int argc, char** argv) {
-    Options o;
+    Options o = defaultOptions();
     std::string problem;
-    if (!parseOptions(argc, argv, o, problem)) {
+    if (!app::parseCpuBenchOptions(argc, argv, kUsage, o, problem)) {
         std::fprintf(stderr, "event-bench: %s\n", problem.c_str());
         return 1;
     }

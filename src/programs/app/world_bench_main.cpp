@@ -4,13 +4,13 @@
 // spawned a frame (remove and spawn batches, then advanceTo), in place and milling, on 1 thread or more
 // (crowdgpu::setWorkerThreads). Prints the median and p95 of each call over the frames, in ms.
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "app/cpu_bench_options.h"
 #include "crowdgpu/crowd.hpp"
 #include "crowdgpu/error.hpp"
 
@@ -24,51 +24,8 @@ constexpr const char* kUsage = R"(usage: world-bench [--count N] [--frames N] [-
                    closed-form state of their episode, which costs more later on)
 )";
 
-struct Options {
-    std::uint32_t count = 1000000, frames = 40;
-    std::vector<unsigned> threads = {1, 16};
-    double start = 0.0;
-};
-
-bool parseCount(const std::string& text, std::uint32_t& out) {
-    const char* end = text.data() + text.size();
-    const auto [at, error] = std::from_chars(text.data(), end, out);
-    return error == std::errc() && at == end && out > 0;
-}
-
-bool parseOptions(int argc, char** argv, Options& o, std::string& problem) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (flag == "--help" || flag == "-h") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
-        }
-        if (i + 1 >= argc) return problem = flag + ": expected a value", false;
-        const std::string value = argv[++i];
-        std::uint32_t n = 0;
-        if (flag == "--count" || flag == "--frames") {
-            if (!parseCount(value, n)) return problem = flag + ": expected a positive whole number, got '" + value + "'", false;
-            (flag == "--count" ? o.count : o.frames) = n;
-        } else if (flag == "--threads") {
-            o.threads.clear();
-            for (std::size_t from = 0; from <= value.size();) {
-                const std::size_t comma = std::min(value.find(',', from), value.size());
-                if (!parseCount(value.substr(from, comma - from), n) || n > 1024)
-                    return problem = "--threads: expected thread counts 1 to 1024 separated by commas, got '" + value + "'", false;
-                o.threads.push_back(n);
-                from = comma + 1;
-            }
-        } else if (flag == "--start") {
-            const char* end = value.data() + value.size();
-            const auto [at, error] = std::from_chars(value.data(), end, o.start);
-            if (error != std::errc() || at != end || !(o.start >= 0.0 && o.start <= 1e6))
-                return problem = "--start: expected seconds from 0 to 1e6, got '" + value + "'", false;
-        } else {
-            return problem = "unknown flag '" + flag + "' (see --help)", false;
-        }
-    }
-    return true;
-}
+using Options = app::CpuBenchOptions;
+Options defaultOptions() { return {1000000, 40, {1, 16}, 0.0}; }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -156,9 +113,9 @@ void measureChurn(const Options& o, unsigned threads, crowdgpu::Behaviour behavi
 }  // namespace
 
 int main(int argc, char** argv) {
-    Options o;
+    Options o = defaultOptions();
     std::string problem;
-    if (!parseOptions(argc, argv, o, problem)) {
+    if (!app::parseCpuBenchOptions(argc, argv, kUsage, o, problem)) {
         std::fprintf(stderr, "world-bench: %s\n", problem.c_str());
         return 1;
     }
