@@ -28,11 +28,15 @@ std::uint32_t groupsFor(std::uint64_t items, std::uint32_t maxGroups) {
 
 }  // namespace
 
-// A crowd made without driven keys keeps one of each (buffers cannot be empty); the passes read none.
-std::uint64_t DrivenPass::bytesFor(std::uint32_t slots, std::uint32_t keysPerSlot, std::uint32_t models) {
+// A crowd made without driven keys keeps one of each (buffers cannot be empty); the passes read none. Each
+// frame slot stages the gait table and reads back its tally; the keys' uploads, which grow with the keys a
+// frame carries, are not counted.
+std::uint64_t DrivenPass::bytesFor(std::uint32_t slots, std::uint32_t keysPerSlot, std::uint32_t models,
+                                   std::uint32_t framesInFlight) {
     const std::uint64_t n = keysPerSlot > 0 ? std::max(slots, 1u) : 1u;
-    return n * std::max(keysPerSlot, 1u) * sizeof(gpu::DrivenKey) + 2 * n * sizeof(std::uint32_t) +
-           std::max(models, 1u) * sizeof(gpu::DrivenModel);
+    const std::uint64_t gaits = std::max(models, 1u) * sizeof(gpu::DrivenModel);
+    return n * std::max(keysPerSlot, 1u) * sizeof(gpu::DrivenKey) + 2 * n * sizeof(std::uint32_t) + gaits +
+           std::uint64_t{framesInFlight} * (gaits + 2 * sizeof(glm::uvec4));
 }
 
 DrivenPass::DrivenPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const CrowdBuffers& buffers,

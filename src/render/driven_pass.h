@@ -42,8 +42,10 @@ public:
     DrivenPass(const DrivenPass&) = delete;
     DrivenPass& operator=(const DrivenPass&) = delete;
 
-    // Device bytes of a crowd's slots with `keysPerSlot` keys and `models` models.
-    static std::uint64_t bytesFor(std::uint32_t slots, std::uint32_t keysPerSlot, std::uint32_t models);
+    // Device bytes of a crowd's slots with `keysPerSlot` keys and `models` models, and of the frames'
+    // staging (not the keys' uploads, which grow with the keys a frame carries).
+    static std::uint64_t bytesFor(std::uint32_t slots, std::uint32_t keysPerSlot, std::uint32_t models,
+                                  std::uint32_t framesInFlight);
 
     // Uploads the models' gait table, and the keys the CPU made after
     // generation `since` (every host-driven slot's ring for crowd::ChangeLog::kEverything). Before the

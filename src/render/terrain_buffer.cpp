@@ -13,11 +13,15 @@ std::uint32_t TerrainBuffer::samplesFor(const crowd::Crowd& crowd, std::uint32_t
     return std::max({asked, static_cast<std::uint32_t>(crowd.terrain().heights().size()), 4u});
 }
 
+std::uint64_t TerrainBuffer::bytesFor(const crowd::Crowd& crowd, std::uint32_t asked) {
+    return sizeof(gpu::TerrainGrid) + std::uint64_t{samplesFor(crowd, asked)} * sizeof(float);
+}
+
 TerrainBuffer::TerrainBuffer(const gpu::VulkanContext& context, const crowd::Crowd& crowd, std::uint32_t samples,
                              std::uint32_t framesInFlight)
     : context_(context), capacity_(samplesFor(crowd, samples)), staging_(framesInFlight) {
     // Zeros until the first upload: a grid of extent z = 0, flat.
-    const std::vector<std::byte> zeros(sizeof(gpu::TerrainGrid) + std::size_t{capacity_} * sizeof(float));
+    const std::vector<std::byte> zeros(sizeof(gpu::TerrainGrid) + std::size_t{capacity_} * sizeof(float));  // bytesFor
     buffer_ = gpu::createBufferWithData(context, zeros, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                         "terrain");
     grid_ = crowd::Terrain().grid();

@@ -23,8 +23,10 @@ public:
     TerrainBuffer(const TerrainBuffer&) = delete;
     TerrainBuffer& operator=(const TerrainBuffer&) = delete;
 
-    // The samples a renderer holds for a crowd and the host's ask (the memory planner's figure is 4 bytes each).
+    // The samples a renderer holds for a crowd and the host's ask, and the bytes of its buffer (the grid
+    // and 4 bytes a sample; the memory planner's figure, without the uploads of a terrain set later).
     static std::uint32_t samplesFor(const crowd::Crowd& crowd, std::uint32_t asked);
+    static std::uint64_t bytesFor(const crowd::Crowd& crowd, std::uint32_t asked);
     // Throws gpu::Error when the crowd's terrain has more heights than the buffer holds.
     void check(const crowd::Crowd& crowd) const;
     // Uploads the crowd's heights when they changed since the last upload, or always with `resend` (a
