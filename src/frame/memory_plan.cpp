@@ -70,7 +70,7 @@ MemoryPlan planMemory(const gpu::VulkanContext& context, const crowd::Crowd& cro
                            .bytes()},
                   {"clip library (GPU animation)", libraryBytes(crowd.library())},
                   {"motion segments (GPU animation)", n * sizeof(gpu::MotionRecord)},
-                  {"driven keys and counts",
+                  {"driven keys, counts and their uploads",
                    render::DrivenPass::bytesFor(crowd.size(), crowd.drivenKeysPerSlot(),
                                                 static_cast<std::uint32_t>(crowd.models().size()), options.framesInFlight)},
                   {"terrain", render::TerrainBuffer::bytesFor(crowd, options.terrainSamples)},

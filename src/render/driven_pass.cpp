@@ -29,14 +29,14 @@ std::uint32_t groupsFor(std::uint64_t items, std::uint32_t maxGroups) {
 }  // namespace
 
 // A crowd made without driven keys keeps one of each (buffers cannot be empty); the passes read none. Each
-// frame slot stages the gait table and reads back its tally; the keys' uploads, which grow with the keys a
-// frame carries, are not counted.
+// frame slot stages the gait table, reads back its tally and keeps room for kLeastUploads keys' uploads
+// (more only while a frame carries more keys: that growth is not counted).
 std::uint64_t DrivenPass::bytesFor(std::uint32_t slots, std::uint32_t keysPerSlot, std::uint32_t models,
                                    std::uint32_t framesInFlight) {
     const std::uint64_t n = keysPerSlot > 0 ? std::max(slots, 1u) : 1u;
     const std::uint64_t gaits = std::max(models, 1u) * sizeof(gpu::DrivenModel);
     return n * std::max(keysPerSlot, 1u) * sizeof(gpu::DrivenKey) + 2 * n * sizeof(std::uint32_t) + gaits +
-           std::uint64_t{framesInFlight} * (gaits + 2 * sizeof(glm::uvec4));
+           std::uint64_t{framesInFlight} * (gaits + 2 * sizeof(glm::uvec4) + kLeastUploads * sizeof(gpu::DrivenKeyUpload));
 }
 
 DrivenPass::DrivenPass(const gpu::VulkanContext& context, const crowd::Crowd& crowd, const CrowdBuffers& buffers,
@@ -122,7 +122,7 @@ void DrivenPass::reserveUploads(std::uint32_t frameSlot, std::size_t entries) {
     Staging& s = staging_[frameSlot];
     if (entries <= s.capacity && s.scatterSet) return;
     // Grown by half again past the need, so a crowd whose uploads grow a little each frame reallocates rarely.
-    const std::size_t capacity = std::max<std::size_t>(entries + entries / 2, 256);
+    const std::size_t capacity = std::max<std::size_t>(entries + entries / 2, kLeastUploads);
     gpu::Buffer uploads = gpu::createBuffer(context_, capacity * sizeof(gpu::DrivenKeyUpload),
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::HostUpload,
                                             "driven keys (upload)");

@@ -43,7 +43,8 @@ public:
     DrivenPass& operator=(const DrivenPass&) = delete;
 
     // Device bytes of a crowd's slots with `keysPerSlot` keys and `models` models, and of the frames'
-    // staging (not the keys' uploads, which grow with the keys a frame carries).
+    // staging (with room for kLeastUploads keys' uploads; more grow with the keys a frame carries).
+    static constexpr std::size_t kLeastUploads = 256;
     static std::uint64_t bytesFor(std::uint32_t slots, std::uint32_t keysPerSlot, std::uint32_t models,
                                   std::uint32_t framesInFlight);
 
